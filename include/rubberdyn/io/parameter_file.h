@@ -1,0 +1,41 @@
+#ifndef rubberdyn_io_parameter_file_h
+#define rubberdyn_io_parameter_file_h
+
+#include <iosfwd>
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace rubberdyn
+{
+  /**
+   * Reading and writing parameter files.
+   */
+  namespace io
+  {
+    /**
+     * Read @p filename into @p prm (whose entries are all declared).
+     *
+     * @throws InputError naming the file, the line and the entry, in one
+     *   readable sentence, if the file is missing or unreadable, an entry is
+     *   unknown, or a value does not match its pattern (type or range).
+     */
+    void
+    read_parameter_file(dealii::ParameterHandler &prm,
+                        const std::string &       filename);
+
+    /**
+     * Write every declared parameter of @p prm as a valid .prm file: each
+     * entry with its documentation, its allowed values (the pattern) and
+     * its default, in declaration order.
+     */
+    void
+    print_documented_parameters(const dealii::ParameterHandler &prm,
+                                std::ostream &                  out);
+  } // namespace io
+} // namespace rubberdyn
+
+#endif

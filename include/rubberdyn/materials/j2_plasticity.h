@@ -1,0 +1,73 @@
+#ifndef rubberdyn_materials_j2_plasticity_h
+#define rubberdyn_materials_j2_plasticity_h
+
+#include <rubberdyn/materials/finite_strain_j2.h>
+#include <rubberdyn/materials/hardening_curve.h>
+#include <rubberdyn/materials/material_model.h>
+
+namespace rubberdyn
+{
+  namespace materials
+  {
+    /**
+     * Finite-strain J2 (von Mises) plasticity with isotropic,
+     * piecewise-linear hardening, for the bolt, sleeves and sheet metal:
+     * the multiplicative model of Simo (1988) described in
+     * finite_strain_j2, with the elastic law of `Elastic`.
+     */
+    template <int dim>
+    class J2Plasticity : public MaterialModel<dim>
+    {
+    public:
+      /** Read the constants from the current subsection (path @p path). */
+      J2Plasticity(const ParameterHandler &prm, const std::string &path);
+
+      /** Construct from E (GPa), nu, the density and the hardening curve. */
+      J2Plasticity(const double          youngs_modulus,
+                   const double          poissons_ratio,
+                   const double          density,
+                   const HardeningCurve &hardening);
+
+      /** Declare `Yield stress` and `Hardening curve`. */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      std::string
+      name() const override;
+
+      double
+      density() const override;
+
+      unsigned int
+      n_state_variables() const override;
+
+      void
+      initialize_state(const ArrayView<double> &state) const override;
+
+      void
+      evaluate(const Tensor<2, dim> &         F,
+               const ArrayView<const double> &state_old,
+               const ArrayView<double> &      state_new,
+               const bool                     compute_tangent,
+               MaterialResponse<dim> &        response) const override;
+
+      double
+      reference_wave_speed() const override;
+
+      double
+      shear_modulus() const override;
+
+      double
+      bulk_modulus() const override;
+
+      void
+      print_constants(std::ostream &out) const override;
+
+    private:
+      finite_strain_j2::ElasticModuli moduli;
+      HardeningCurve                  hardening;
+    };
+  } // namespace materials
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,100 @@
+#ifndef rubberdyn_studies_study_h
+#define rubberdyn_studies_study_h
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace rubberdyn
+{
+  /**
+   * Studies: what `rubberdyn FILE.prm` runs. A study reads all of its
+   * parameters (and rejects bad ones) in its constructor, before anything
+   * is written, and does its work in run().
+   */
+  namespace studies
+  {
+    /**
+     * Interface of a study.
+     */
+    class Study
+    {
+    public:
+      virtual ~Study() = default;
+
+      /**
+       * Run the study, writing results below the output directory and a log
+       * to @p log.
+       */
+      virtual void
+      run(std::ostream &log) = 0;
+    };
+
+
+    /**
+     * The registry of studies; `set Study = ...` chooses one by name.
+     */
+    namespace registry
+    {
+      /** Declares the study's own parameters (at the top level). */
+      using DeclareFunction = std::function<void(dealii::ParameterHandler &)>;
+
+      /** Creates the study from the parsed parameters. */
+      using CreateFunction =
+        std::function<std::unique_ptr<Study>(dealii::ParameterHandler &)>;
+
+      /** Add a study; returns a dummy value for static registration. */
+      int
+      register_study(const std::string &    name,
+                     const std::string &    description,
+                     const DeclareFunction &declare,
+                     const CreateFunction & create);
+
+      /** The registered names, sorted. */
+      std::vector<std::string>
+      names();
+
+      /**
+       * Declare everything a parameter file may hold: `Study`, `Dimension`,
+       * the `Output` subsection and every registered study's parameters.
+       */
+      void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Create the study chosen by `Study`.
+       *
+       * @throws InputError on invalid parameters.
+       */
+      std::unique_ptr<Study>
+      create(dealii::ParameterHandler &prm);
+    } // namespace registry
+  }   // namespace studies
+} // namespace rubberdyn
+
+/**
+ * Register study class @p classname (constructor from a non-const ParameterHandler, which it enters,
+ * static `declare_parameters(ParameterHandler&)`) under @p name.
+ */
+#define RUBBERDYN_REGISTER_STUDY(classname, name, description)        \
+  namespace                                                           \
+  {                                                                   \
+    const int dummy_register_study_##classname =                      \
+      ::rubberdyn::studies::registry::register_study(                 \
+        name,                                                         \
+        description,                                                  \
+        &classname::declare_parameters,                               \
+        [](::dealii::ParameterHandler &prm)                           \
+          -> std::unique_ptr<::rubberdyn::studies::Study> {           \
+          return std::make_unique<classname>(prm);                    \
+        });                                                           \
+  }
+
+#endif

@@ -1,0 +1,217 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <rubberdyn/app/command_line.h>
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/io/parameter_file.h>
+#include <rubberdyn/materials/yeoh_fit.h>
+#include <rubberdyn/studies/study.h>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace app
+  {
+    namespace
+    {
+      const char *usage_text =
+        "Usage:\n"
+        "  rubberdyn FILE.prm            run the study described by FILE.prm\n"
+        "  rubberdyn --print-parameters  print every parameter with its\n"
+        "                                documentation, allowed values and\n"
+        "                                default, as a valid .prm file\n"
+        "  rubberdyn --fit-yeoh MODE=FILE.csv [MODE=FILE.csv ...]\n"
+        "            [--curves OUT.csv]  least-squares fit of the Yeoh\n"
+        "                                constants C10, C20, C30 to test data;\n"
+        "                                MODE is uniaxial, equibiaxial or\n"
+        "                                pure_shear; each FILE.csv has a\n"
+        "                                header 'stretch,nominal_stress [MPa]'\n"
+        "                                (Pa, kPa, MPa or GPa); --curves writes\n"
+        "                                measured and fitted stresses\n"
+        "  rubberdyn --help              this text\n"
+        "\n"
+        "Units everywhere: mm, ms, kg, kN, GPa (energy J = kN mm, density\n"
+        "kg/mm^3, velocity mm/ms = m/s). Example parameter files are in\n"
+        "parameter_files/; doc/parameters.prm documents every parameter.\n";
+
+      bool
+      is_root()
+      {
+        return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      }
+
+      void
+      report_error(const std::string &message)
+      {
+        // Every rank reads the same input and fails the same way; one
+        // message is enough.
+        if (is_root())
+          std::cerr << "rubberdyn: error: " << message << std::endl;
+      }
+
+      int
+      print_parameters()
+      {
+        dealii::ParameterHandler prm;
+        studies::registry::declare_parameters(prm);
+        if (is_root())
+          io::print_documented_parameters(prm, std::cout);
+        return 0;
+      }
+
+      int
+      run_study(const std::string &filename)
+      {
+        dealii::ParameterHandler prm;
+        studies::registry::declare_parameters(prm);
+        std::unique_ptr<studies::Study> study;
+        try
+          {
+            io::read_parameter_file(prm, filename);
+            study = studies::registry::create(prm);
+          }
+        catch (const InputError &error)
+          {
+            // InputErrors from the reader name the file already; those of a
+            // study name the entry.
+            if (error.entry_path.rfind(filename, 0) == 0)
+              report_error(error.what());
+            else
+              report_error("in parameter file '" + filename + "', entry '" +
+                           error.entry_path + "': " + error.message);
+            return 2;
+          }
+        study->run(std::cout);
+        return 0;
+      }
+
+      int
+      fit_yeoh(const std::vector<std::string> &arguments)
+      {
+        using namespace materials::yeoh_fit;
+        std::vector<DataSet> data;
+        std::string          curves_file;
+        for (unsigned int i = 0; i < arguments.size(); ++i)
+          {
+            if (arguments[i] == "--curves")
+              {
+                if (i + 1 >= arguments.size())
+                  throw InputError("--curves", "needs a file name");
+                curves_file = arguments[++i];
+                continue;
+              }
+            const auto equals = arguments[i].find('=');
+            if (equals == std::string::npos)
+              throw InputError(arguments[i],
+                               "expected MODE=FILE.csv with MODE one of "
+                               "uniaxial, equibiaxial, pure_shear");
+            const TestMode mode =
+              mode_from_name(arguments[i].substr(0, equals), arguments[i]);
+            data.push_back(read_csv(arguments[i].substr(equals + 1), mode));
+          }
+        if (data.empty())
+          throw InputError("--fit-yeoh", "needs at least one MODE=FILE.csv");
+
+        const Result result = fit(data);
+        std::cout << std::setprecision(6);
+        std::cout << "Yeoh least-squares fit (incompressible, absolute "
+                     "nominal-stress residuals)\n";
+        const char *names[3] = {"C10", "C20", "C30"};
+        for (unsigned int j = 0; j < 3; ++j)
+          std::cout << "  " << names[j] << " = " << result.C[j] * 1e3
+                    << " MPa\n";
+        std::cout << "Error per data set:\n";
+        for (unsigned int k = 0; k < data.size(); ++k)
+          std::cout << "  " << std::setw(12) << std::left
+                    << mode_name(data[k].mode) << std::right
+                    << " points " << std::setw(3) << data[k].stretch.size()
+                    << "  rms " << result.errors[k].rms_error * 1e3
+                    << " MPa  mean relative "
+                    << 100. * result.errors[k].mean_relative_error
+                    << " %  max relative "
+                    << 100. * result.errors[k].max_relative_error << " %  ("
+                    << data[k].source << ")\n";
+        std::cout << "For a parameter file (GPa):\n"
+                  << "  set Constants from = coefficients\n";
+        for (unsigned int j = 0; j < 3; ++j)
+          std::cout << "  set " << names[j] << " = "
+                    << parameter_tools::format_number(result.C[j]) << "\n";
+
+        if (!curves_file.empty())
+          {
+            std::ofstream out(curves_file);
+            if (!out)
+              throw InputError(curves_file, "cannot write this file");
+            out << "mode,stretch,measured_nominal_stress_MPa,"
+                   "fitted_nominal_stress_MPa\n";
+            out << std::setprecision(8);
+            for (const DataSet &set : data)
+              for (unsigned int i = 0; i < set.stretch.size(); ++i)
+                out << mode_name(set.mode) << ',' << set.stretch[i] << ','
+                    << set.nominal_stress[i] * 1e3 << ','
+                    << nominal_stress(set.mode, set.stretch[i], result.C) *
+                         1e3
+                    << '\n';
+            std::cout << "Wrote measured and fitted stresses to "
+                      << curves_file << "\n";
+          }
+        return 0;
+      }
+    } // namespace
+
+
+
+    int
+    run_command_line(int argc, char *argv[])
+    {
+      const std::vector<std::string> arguments(argv + 1, argv + argc);
+      try
+        {
+          if (arguments.empty())
+            {
+              report_error("no parameter file given\n" +
+                           std::string(usage_text));
+              return 1;
+            }
+          if (arguments[0] == "--help" || arguments[0] == "-h")
+            {
+              if (is_root())
+                std::cout << usage_text;
+              return 0;
+            }
+          if (arguments[0] == "--print-parameters")
+            return print_parameters();
+          if (arguments[0] == "--fit-yeoh")
+            return fit_yeoh({arguments.begin() + 1, arguments.end()});
+          if (arguments[0].rfind("-", 0) == 0 || arguments.size() > 1)
+            {
+              report_error("unknown option or extra argument in '" +
+                           arguments.back() + "'\n" + usage_text);
+              return 1;
+            }
+          return run_study(arguments[0]);
+        }
+      catch (const InputError &error)
+        {
+          report_error(error.what());
+          return 2;
+        }
+      catch (const InvertedMaterialError &error)
+        {
+          report_error(error.what());
+          return 3;
+        }
+      catch (const std::exception &error)
+        {
+          report_error(error.what());
+          return 1;
+        }
+    }
+  } // namespace app
+} // namespace rubberdyn

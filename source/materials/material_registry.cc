@@ -1,0 +1,146 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/materials/material_registry.h>
+
+#include <map>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace materials
+  {
+    namespace registry
+    {
+      namespace
+      {
+        struct Entry
+        {
+          std::string       description;
+          DeclareFunction   declare;
+          CreateFunction<2> create_2d;
+          CreateFunction<3> create_3d;
+        };
+
+        // Function-local static: safe against the static initialization
+        // order of the registering translation units.
+        std::map<std::string, Entry> &
+        entries()
+        {
+          static std::map<std::string, Entry> map;
+          return map;
+        }
+
+        template <int dim>
+        const CreateFunction<dim> &
+        factory(const Entry &entry);
+
+        template <>
+        const CreateFunction<2> &
+        factory<2>(const Entry &entry)
+        {
+          return entry.create_2d;
+        }
+
+        template <>
+        const CreateFunction<3> &
+        factory<3>(const Entry &entry)
+        {
+          return entry.create_3d;
+        }
+      } // namespace
+
+
+      int
+      register_material(const std::string &      name,
+                        const std::string &      description,
+                        const DeclareFunction &  declare,
+                        const CreateFunction<2> &create_2d,
+                        const CreateFunction<3> &create_3d)
+      {
+        entries()[name] = Entry{description, declare, create_2d, create_3d};
+        return 0;
+      }
+
+
+
+      std::vector<std::string>
+      names()
+      {
+        std::vector<std::string> result;
+        for (const auto &entry : entries())
+          result.push_back(entry.first);
+        return result;
+      }
+
+
+
+      std::string
+      pattern_string()
+      {
+        std::string result;
+        for (const auto &entry : entries())
+          result += (result.empty() ? "" : "|") + entry.first;
+        return result;
+      }
+
+
+
+      void
+      declare_part_parameters(ParameterHandler &prm,
+                              const PartDefaults &defaults)
+      {
+        std::ostringstream doc;
+        doc << "Constitutive law of this part. One of:";
+        for (const auto &entry : entries())
+          doc << "\n'" << entry.first << "': " << entry.second.description;
+        prm.declare_entry("Model",
+                          defaults.model,
+                          Patterns::Selection(pattern_string()),
+                          doc.str());
+        prm.declare_entry("Density",
+                          parameter_tools::format_number(defaults.density),
+                          Patterns::Double(0.),
+                          "Mass density in the reference configuration "
+                          "(kg/mm^3). Must be positive. Rubber: 1.1e-6, "
+                          "steel: 7.85e-6, aluminium: 2.7e-6.");
+        prm.declare_entry(
+          "Poisson's ratio",
+          parameter_tools::format_number(defaults.poissons_ratio),
+          Patterns::Double(0., 0.5),
+          "Small-strain Poisson's ratio, in [0, 0.5). For 'Yeoh' it sets "
+          "the bulk modulus when 'Volumetric model = Poisson's ratio'; for "
+          "'Elastic' and 'J2 plasticity' it is the elastic Poisson's ratio. "
+          "Nearly incompressible rubber: 0.499.");
+        prm.declare_entry("Young's modulus",
+                          "210",
+                          Patterns::Double(0.),
+                          "Small-strain Young's modulus E (GPa) of 'Elastic' "
+                          "and 'J2 plasticity'. Steel: 210, aluminium: 70.");
+        for (const auto &entry : entries())
+          entry.second.declare(prm);
+      }
+
+
+
+      template <int dim>
+      std::unique_ptr<MaterialModel<dim>>
+      create(const ParameterHandler &prm, const std::string &path)
+      {
+        const std::string name = prm.get("Model");
+        const auto        it   = entries().find(name);
+        if (it == entries().end())
+          throw InputError(path + "/Model",
+                           "unknown material model '" + name +
+                             "'; valid names are " + pattern_string());
+        return factory<dim>(it->second)(prm, path);
+      }
+
+      template std::unique_ptr<MaterialModel<2>>
+      create<2>(const ParameterHandler &, const std::string &);
+      template std::unique_ptr<MaterialModel<3>>
+      create<3>(const ParameterHandler &, const std::string &);
+    } // namespace registry
+  }   // namespace materials
+} // namespace rubberdyn

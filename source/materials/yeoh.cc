@@ -1,0 +1,355 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/physics/elasticity/standard_tensors.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/materials/material_registry.h>
+#include <rubberdyn/materials/yeoh.h>
+
+#include <cmath>
+#include <ostream>
+
+namespace rubberdyn
+{
+  namespace materials
+  {
+    using parameter_tools::format_number;
+    using parameter_tools::format_short;
+    using parameter_tools::require_positive;
+
+    template <int dim>
+    void
+    Yeoh<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Constants from",
+        "coefficients",
+        Patterns::Selection("coefficients|initial shear modulus|"
+                            "Shore A hardness"),
+        "(Yeoh) Where C10, C20, C30 come from: 'coefficients' uses the "
+        "entries C10, C20, C30; 'initial shear modulus' uses eq. 3.11 of the "
+        "reference study, C10 = G/2, C20 = -G/20, C30 = G/200 with G = "
+        "'Initial shear modulus'; 'Shore A hardness' takes Young's modulus "
+        "from Gent's (1958) relation, G = E/3, then eq. 3.11.");
+      prm.declare_entry("C10",
+                        "0.00055",
+                        Patterns::Double(),
+                        "(Yeoh) Coefficient C10 (GPa). Must be positive; "
+                        "G = 2 C10 at small strain.");
+      prm.declare_entry("C20",
+                        "-0.00005",
+                        Patterns::Double(),
+                        "(Yeoh) Coefficient C20 (GPa).");
+      prm.declare_entry("C30",
+                        "0.000015",
+                        Patterns::Double(),
+                        "(Yeoh) Coefficient C30 (GPa); governs large "
+                        "strains.");
+      prm.declare_entry("Initial shear modulus",
+                        "0.0011",
+                        Patterns::Double(0.),
+                        "(Yeoh) Initial shear modulus G (GPa), used when "
+                        "'Constants from = initial shear modulus'.");
+      prm.declare_entry("Shore A hardness",
+                        "52",
+                        Patterns::Double(10., 90.),
+                        "(Yeoh) Shore A hardness, in [10, 90], used when "
+                        "'Constants from = Shore A hardness'. Gent's "
+                        "relation is an empirical fit, best between 40 and "
+                        "80 Shore A.");
+      prm.declare_entry(
+        "Volumetric model",
+        "Poisson's ratio",
+        Patterns::Selection("Poisson's ratio|bulk modulus|polynomial"),
+        "(Yeoh) How the volumetric term sum_k (1/d_k)(J-1)^(2k) is set: "
+        "from 'Poisson's ratio' (K = 2G(1+nu)/(3(1-2nu)), G = 2 C10, "
+        "d1 = 2/K), from 'Bulk modulus' (d1 = 2/K), or from 'D1', 'D2', "
+        "'D3' ('polynomial', eq. 3.16).");
+      prm.declare_entry("Bulk modulus",
+                        "1.1",
+                        Patterns::Double(0.),
+                        "(Yeoh) Small-strain bulk modulus K (GPa), used when "
+                        "'Volumetric model = bulk modulus'. Rubber: 1000 to "
+                        "2000 times the shear modulus.");
+      prm.declare_entry("D1",
+                        "0.002",
+                        Patterns::Double(0.),
+                        "(Yeoh) d1 of eq. 3.16 (1/GPa), used when "
+                        "'Volumetric model = polynomial'. Must be positive; "
+                        "K = 2/d1.");
+      prm.declare_entry("D2",
+                        "0",
+                        Patterns::Double(0.),
+                        "(Yeoh) d2 of eq. 3.16 (1/GPa); 0 omits the term.");
+      prm.declare_entry("D3",
+                        "0",
+                        Patterns::Double(0.),
+                        "(Yeoh) d3 of eq. 3.16 (1/GPa); 0 omits the term.");
+    }
+
+
+
+    template <int dim>
+    double
+    Yeoh<dim>::youngs_modulus_from_shore_a(const double hardness)
+    {
+      // Gent (1958), E in MPa; converted to GPa.
+      const double E_MPa = 0.0981 * (56. + 7.62336 * hardness) /
+                           (0.137505 * (254. - 2.54 * hardness));
+      return 1e-3 * E_MPa;
+    }
+
+
+
+    template <int dim>
+    Yeoh<dim>::Yeoh(const double                 C10,
+                    const double                 C20,
+                    const double                 C30,
+                    const std::array<double, 3> &d,
+                    const double                 density)
+      : C10(C10)
+      , C20(C20)
+      , C30(C30)
+      , rho(density)
+    {
+      require_positive(C10, "C10");
+      require_positive(d[0], "D1");
+      require_positive(density, "Density");
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          if (d[k] < 0.)
+            throw InputError("D" + std::to_string(k + 1),
+                             "must not be negative");
+          inverse_d[k] = (d[k] > 0. ? 1. / d[k] : 0.);
+        }
+    }
+
+
+
+    template <int dim>
+    Yeoh<dim>::Yeoh(const ParameterHandler &prm, const std::string &path)
+    {
+      const std::string constants_from = prm.get("Constants from");
+      if (constants_from == "coefficients")
+        {
+          C10 = prm.get_double("C10");
+          C20 = prm.get_double("C20");
+          C30 = prm.get_double("C30");
+          require_positive(C10, path + "/C10");
+        }
+      else
+        {
+          double G = 0.;
+          if (constants_from == "initial shear modulus")
+            {
+              G = prm.get_double("Initial shear modulus");
+              require_positive(G, path + "/Initial shear modulus");
+            }
+          else
+            G = youngs_modulus_from_shore_a(
+                  prm.get_double("Shore A hardness")) /
+                3.;
+          // Reference study, eq. 3.11.
+          C10 = G / 2.;
+          C20 = -G / 20.;
+          C30 = G / 200.;
+        }
+
+      rho = prm.get_double("Density");
+      require_positive(rho, path + "/Density");
+
+      const double      G                = 2. * C10;
+      const std::string volumetric_model = prm.get("Volumetric model");
+      inverse_d                          = {{0., 0., 0.}};
+      if (volumetric_model == "polynomial")
+        {
+          const char *names[3] = {"D1", "D2", "D3"};
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const double d = prm.get_double(names[k]);
+              if (k == 0)
+                require_positive(d, path + "/D1");
+              inverse_d[k] = (d > 0. ? 1. / d : 0.);
+            }
+        }
+      else
+        {
+          double K = 0.;
+          if (volumetric_model == "bulk modulus")
+            {
+              K = prm.get_double("Bulk modulus");
+              require_positive(K, path + "/Bulk modulus");
+            }
+          else
+            {
+              const double nu = prm.get_double("Poisson's ratio");
+              if (!(nu >= 0. && nu < 0.5))
+                throw InputError(
+                  path + "/Poisson's ratio",
+                  "must lie in [0, 0.5), but is " + format_number(nu) +
+                    " (a compressible law needs a finite bulk modulus; "
+                    "use 0.499 for nearly incompressible rubber)");
+              K = 2. * G * (1. + nu) / (3. * (1. - 2. * nu));
+            }
+          inverse_d[0] = K / 2.;
+        }
+    }
+
+
+
+    template <int dim>
+    std::string
+    Yeoh<dim>::name() const
+    {
+      return "Yeoh";
+    }
+
+
+
+    template <int dim>
+    double
+    Yeoh<dim>::density() const
+    {
+      return rho;
+    }
+
+
+
+    template <int dim>
+    double
+    Yeoh<dim>::shear_modulus() const
+    {
+      return 2. * C10;
+    }
+
+
+
+    template <int dim>
+    double
+    Yeoh<dim>::bulk_modulus() const
+    {
+      // U''(1) = 2/d1.
+      return 2. * inverse_d[0];
+    }
+
+
+
+    template <int dim>
+    double
+    Yeoh<dim>::reference_wave_speed() const
+    {
+      return std::sqrt((bulk_modulus() + 4. / 3. * shear_modulus()) / rho);
+    }
+
+
+
+    template <int dim>
+    void
+    Yeoh<dim>::print_constants(std::ostream &out) const
+    {
+      out << "Yeoh: C10 = " << format_short(C10)
+          << " GPa, C20 = " << format_short(C20)
+          << " GPa, C30 = " << format_short(C30)
+          << " GPa, G = " << format_short(shear_modulus())
+          << " GPa, K = " << format_short(bulk_modulus())
+          << " GPa, D1 = "
+          << format_short(inverse_d[0] > 0 ? 1. / inverse_d[0] : 0.)
+          << " 1/GPa, density = " << format_short(rho)
+          << " kg/mm^3, wave speed = " << format_short(reference_wave_speed())
+          << " mm/ms" << std::endl;
+    }
+
+
+
+    template <int dim>
+    void
+    Yeoh<dim>::evaluate_3d(const Tensor<2, 3> & F,
+                           const bool           compute_tangent,
+                           MaterialResponse<3> &response) const
+    {
+      using Tensors = Physics::Elasticity::StandardTensors<3>;
+
+      const double J = determinant(F);
+      if (!(J > 0.) || !std::isfinite(J))
+        throw InvertedMaterialError(J);
+
+      // Isochoric left Cauchy-Green tensor and its invariant (eq. 3.15).
+      const double                  J_m23 = std::pow(J, -2. / 3.);
+      const SymmetricTensor<2, 3>   b_bar =
+        J_m23 * symmetrize(Tensor<2, 3>(F * transpose(F)));
+      const double                  I1_bar    = trace(b_bar);
+      const SymmetricTensor<2, 3>   dev_b_bar = deviator(b_bar);
+      const double                  x         = I1_bar - 3.;
+      const double W1 = C10 + 2. * C20 * x + 3. * C30 * x * x; // dW/dI1bar
+      const double W2 = 2. * C20 + 6. * C30 * x; // d2W/dI1bar2
+
+      // Volumetric part U(J) = sum_k (1/d_k)(J-1)^(2k) and its derivatives.
+      const double y  = J - 1.;
+      double       U  = 0.;
+      double       dU = 0.;
+      double       d2U = 0.;
+      double       y_power = 1.; // y^(2k-2)
+      for (unsigned int k = 1; k <= 3; ++k)
+        {
+          const double c = inverse_d[k - 1];
+          d2U += c * (2. * k) * (2. * k - 1.) * y_power;
+          dU += c * (2. * k) * y_power * y;
+          U += c * y_power * y * y;
+          y_power *= y * y;
+        }
+
+      const SymmetricTensor<2, 3> tau_iso = 2. * W1 * dev_b_bar;
+      const double                tau_vol = J * dU; // Kirchhoff pressure
+      response.kirchhoff_stress           = tau_vol * Tensors::I + tau_iso;
+      response.strain_energy_density =
+        x * (C10 + x * (C20 + x * C30)) + U;
+
+      // Upper estimate of the largest longitudinal acoustic modulus, exact
+      // at F = I (K + 4G/3); see doc/theory.md.
+      const double mu_bar = 2. / 3. * W1 * I1_bar;
+      const double longitudinal_modulus =
+        J * J * d2U + 4. / 3. * std::abs(mu_bar) + tau_iso.norm() +
+        4. * std::max(W2, 0.) * dev_b_bar.norm() * dev_b_bar.norm();
+      response.dilatational_wave_speed =
+        std::sqrt(std::max(longitudinal_modulus, 0.) / rho);
+
+      if (compute_tangent)
+        response.spatial_tangent =
+          2. * mu_bar * Tensors::dev_P -
+          2. / 3. * (outer_product(tau_iso, Tensors::I) +
+                     outer_product(Tensors::I, tau_iso)) +
+          4. * W2 * outer_product(dev_b_bar, dev_b_bar) +
+          (tau_vol + J * J * d2U) * Tensors::IxI - 2. * tau_vol * Tensors::S;
+    }
+
+
+
+    template <int dim>
+    void
+    Yeoh<dim>::evaluate(const Tensor<2, dim> &F,
+                        const ArrayView<const double> &,
+                        const ArrayView<double> &,
+                        const bool             compute_tangent,
+                        MaterialResponse<dim> &response) const
+    {
+      if constexpr (dim == 3)
+        evaluate_3d(F, compute_tangent, response);
+      else
+        {
+          MaterialResponse<3> response_3d;
+          evaluate_3d(internal::embed_in_3d(F), compute_tangent, response_3d);
+          internal::restrict_from_3d(response_3d, compute_tangent, response);
+        }
+    }
+
+    template class Yeoh<2>;
+    template class Yeoh<3>;
+
+    RUBBERDYN_REGISTER_MATERIAL(
+      Yeoh,
+      "Yeoh",
+      "nearly incompressible Yeoh rubber, W = sum_i Ci0 (I1bar-3)^i + sum_k "
+      "(1/d_k)(J-1)^(2k) (reference study eq. 3.16)")
+  } // namespace materials
+} // namespace rubberdyn
+

@@ -1,0 +1,98 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/studies/study.h>
+
+#include <map>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace studies
+  {
+    namespace registry
+    {
+      namespace
+      {
+        struct Entry
+        {
+          std::string     description;
+          DeclareFunction declare;
+          CreateFunction  create;
+        };
+
+        std::map<std::string, Entry> &
+        entries()
+        {
+          static std::map<std::string, Entry> map;
+          return map;
+        }
+      } // namespace
+
+
+      int
+      register_study(const std::string &    name,
+                     const std::string &    description,
+                     const DeclareFunction &declare,
+                     const CreateFunction & create)
+      {
+        entries()[name] = Entry{description, declare, create};
+        return 0;
+      }
+
+
+
+      std::vector<std::string>
+      names()
+      {
+        std::vector<std::string> result;
+        for (const auto &entry : entries())
+          result.push_back(entry.first);
+        return result;
+      }
+
+
+
+      void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        std::ostringstream doc;
+        std::string        pattern;
+        doc << "The study to run. One of:";
+        for (const auto &entry : entries())
+          {
+            doc << "\n'" << entry.first << "': " << entry.second.description;
+            pattern += (pattern.empty() ? "" : "|") + entry.first;
+          }
+        prm.declare_entry("Study",
+                          "Material point",
+                          dealii::Patterns::Selection(pattern),
+                          doc.str());
+
+        prm.enter_subsection("Output");
+        prm.declare_entry("Output directory",
+                          "output",
+                          dealii::Patterns::DirectoryName(),
+                          "Directory for all results; created if missing. "
+                          "Relative paths are relative to the working "
+                          "directory.");
+        prm.leave_subsection();
+
+        for (const auto &entry : entries())
+          entry.second.declare(prm);
+      }
+
+
+
+      std::unique_ptr<Study>
+      create(dealii::ParameterHandler &prm)
+      {
+        const std::string name = prm.get("Study");
+        const auto        it   = entries().find(name);
+        if (it == entries().end())
+          throw InputError("Study", "unknown study '" + name + "'");
+        return it->second.create(prm);
+      }
+    } // namespace registry
+  }   // namespace studies
+} // namespace rubberdyn
