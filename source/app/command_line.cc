@@ -23,6 +23,8 @@ namespace rubberdyn
       const char *usage_text =
         "Usage:\n"
         "  rubberdyn FILE.prm            run the study described by FILE.prm\n"
+        "  rubberdyn --default           run the default study: every parameter\n"
+        "                                at its default (doc/parameters.prm)\n"
         "  rubberdyn --print-parameters  print every parameter with its\n"
         "                                documentation, allowed values and\n"
         "                                default, as a valid .prm file\n"
@@ -65,6 +67,10 @@ namespace rubberdyn
         return 0;
       }
 
+      /**
+       * Run the study of @p filename, or with every parameter at its
+       * default if @p filename is empty.
+       */
       int
       run_study(const std::string &filename)
       {
@@ -73,14 +79,15 @@ namespace rubberdyn
         std::unique_ptr<studies::Study> study;
         try
           {
-            io::read_parameter_file(prm, filename);
+            if (!filename.empty())
+              io::read_parameter_file(prm, filename);
             study = studies::registry::create(prm);
           }
         catch (const InputError &error)
           {
             // InputErrors from the reader name the file already; those of a
             // study name the entry.
-            if (error.entry_path.rfind(filename, 0) == 0)
+            if (!filename.empty() && error.entry_path.rfind(filename, 0) == 0)
               report_error(error.what());
             else
               report_error("in parameter file '" + filename + "', entry '" +
@@ -185,6 +192,8 @@ namespace rubberdyn
                 std::cout << usage_text;
               return 0;
             }
+          if (arguments[0] == "--default" && arguments.size() == 1)
+            return run_study("");
           if (arguments[0] == "--print-parameters")
             return print_parameters();
           if (arguments[0] == "--fit-yeoh")

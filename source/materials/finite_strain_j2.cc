@@ -126,6 +126,9 @@ namespace rubberdyn
         response.dilatational_wave_speed = std::sqrt(
           (0.5 * K * (J * J + 1.) + 4. / 3. * mu_bar + s.norm()) / density);
 
+        Assert((state_new.size() == 0) == (state_old.size() == 0),
+               ExcMessage("old and new history must both be given or both "
+                          "be empty"));
         if (!(state_new.size() == 0))
           {
             const double alpha_new = alpha_old + delta_alpha;

@@ -70,6 +70,24 @@ namespace rubberdyn
 
 
       double
+      incompressible_lateral_stretch(const Mode mode, const double load)
+      {
+        switch (mode)
+          {
+            case Mode::uniaxial_stress:
+              return 1. / std::sqrt(load);
+            case Mode::equibiaxial_stress:
+              return 1. / (load * load);
+            case Mode::pure_shear:
+              return 1. / load;
+            default:
+              return 1.;
+          }
+      }
+
+
+
+      double
       solve(const MaterialModel<3> &       material,
             const Mode                     mode,
             const double                   load,
@@ -89,27 +107,41 @@ namespace rubberdyn
         if (mode == Mode::uniaxial_stress)
           dF[1][1] = 1.;
 
+        // Newton's method with backtracking: a step is halved until the
+        // stress residual decreases (and the stretch stays positive).
+        const auto residual_at = [&](const double m) {
+          const Tensor<2, 3> F = deformation_gradient(mode, load, m);
+          material.evaluate(F, state_old, state_new, true, response);
+          return response.kirchhoff_stress[free_component][free_component];
+        };
+        double residual = residual_at(mu);
+        if (!has_free_stretch)
+          return mu;
         for (unsigned int iteration = 0; iteration < 50; ++iteration)
           {
-            const Tensor<2, 3> F = deformation_gradient(mode, load, mu);
-            material.evaluate(F, state_old, state_new, true, response);
-            if (!has_free_stretch)
-              return mu;
-
-            const double residual =
-              response.kirchhoff_stress[free_component][free_component];
             const double scale =
               response.kirchhoff_stress.norm() + material.shear_modulus();
-            if (std::abs(residual) <= 1e-12 * scale)
+            // Relative 1e-13, plus the round-off floor of the volumetric
+            // stress K (J - 1), which cancels to the residual.
+            if (std::abs(residual) <=
+                1e-13 * scale + 1e-14 * material.bulk_modulus())
               return mu;
 
-            const double slope =
+            const Tensor<2, 3> F = deformation_gradient(mode, load, mu);
+            const double       slope =
               internal::kirchhoff_stress_derivative(response, F, dF)
                 [free_component][free_component];
             double step = -residual / slope;
-            // Keep the stretch positive.
-            while (mu + step <= 0.)
-              step /= 2.;
+            for (unsigned int halving = 0; halving < 40; ++halving, step /= 2.)
+              if (mu + step > 0.)
+                {
+                  const double new_residual = residual_at(mu + step);
+                  if (std::abs(new_residual) < std::abs(residual))
+                    {
+                      residual = new_residual;
+                      break;
+                    }
+                }
             mu += step;
           }
         throw std::runtime_error(

@@ -254,7 +254,8 @@ namespace rubberdyn
 
         for (const DataSet &set : data)
           {
-            ModeError error{0., 0., 0.};
+            ModeError    error{0., 0., 0.};
+            unsigned int n_nonzero = 0;
             for (unsigned int i = 0; i < set.stretch.size(); ++i)
               {
                 const double difference =
@@ -266,12 +267,14 @@ namespace rubberdyn
                     const double relative =
                       std::abs(difference / set.nominal_stress[i]);
                     error.mean_relative_error += relative;
+                    ++n_nonzero;
                     error.max_relative_error =
                       std::max(error.max_relative_error, relative);
                   }
               }
             error.rms_error = std::sqrt(error.rms_error / set.stretch.size());
-            error.mean_relative_error /= set.stretch.size();
+            if (n_nonzero > 0)
+              error.mean_relative_error /= n_nonzero;
             result.errors.push_back(error);
           }
         return result;

@@ -110,6 +110,7 @@ namespace rubberdyn
       double       mu         = 1.;
       const unsigned int n_total = (unload ? 2 * n_steps : n_steps);
       materials::MaterialResponse<3> response;
+      double last_load = 0., last_J = 1., last_nominal_stress = 0.;
       for (unsigned int step = 0; step <= n_total; ++step)
         {
           const double fraction =
@@ -143,8 +144,18 @@ namespace rubberdyn
               << ',' << tau[0][1] / J << ',' << P[0][0] << ','
               << response.strain_energy_density << ',' << alpha << ','
               << response.dilatational_wave_speed << '\n';
+          last_load           = load;
+          last_J              = J;
+          last_nominal_stress = P[0][0];
         }
       log << "Wrote " << n_total + 1 << " steps to " << filename << std::endl;
+      log << "Final state: load " << parameter_tools::format_short(last_load)
+          << ", J = " << parameter_tools::format_short(last_J)
+          << ", nominal stress P_11 = "
+          << parameter_tools::format_short(last_nominal_stress)
+          << " GPa, strain energy density = "
+          << parameter_tools::format_short(response.strain_energy_density)
+          << " GPa" << std::endl;
     }
 
     RUBBERDYN_REGISTER_STUDY(

@@ -12,6 +12,8 @@ namespace rubberdyn
      * Interpret the command line and do what it asks:
      *
      * - `rubberdyn FILE.prm`: run the study the file describes;
+     * - `rubberdyn --default`: run the default study, every parameter at
+     *   its default;
      * - `rubberdyn --print-parameters`: print every parameter with its
      *   documentation, allowed values and default, as a valid .prm file;
      * - `rubberdyn --fit-yeoh MODE=FILE.csv ...`: fit Yeoh constants to test

@@ -19,7 +19,12 @@ namespace rubberdyn
       /** The deformation modes. */
       enum class Mode
       {
-        /** $F = \mathrm{diag}(\lambda, \mu, \mu)$, $\tau_{22} = \tau_{33} = 0$. */
+        /**
+         * $F = \mathrm{diag}(\lambda, \mu, \mu)$, $\tau_{22} = \tau_{33} = 0$;
+         * only $\tau_{22}$ is driven to zero, $\tau_{33}$ follows by the
+         * symmetry of an isotropic point without history transverse to the
+         * axis (true for every path this mode itself produces).
+         */
         uniaxial_stress,
         /** $F = \mathrm{diag}(\lambda, \lambda, \mu)$, $\tau_{33} = 0$. */
         equibiaxial_stress,
@@ -48,13 +53,25 @@ namespace rubberdyn
       deformation_gradient(const Mode mode, const double load, const double mu);
 
       /**
+       * The lateral stretch of an incompressible material in @p mode at
+       * @p load: a good first guess for solve() (1 where there is none).
+       */
+      double
+      incompressible_lateral_stretch(const Mode mode, const double load);
+
+      /**
        * Solve for the free lateral stretch at load @p load, starting from
        * @p mu, and leave the response at the solution in @p response and the
        * updated history in @p state_new (from @p state_old).
        *
+       * Start from a nearby state (the previous load step, or
+       * incompressible_lateral_stretch()): the volumetric term of eq. 3.16
+       * stays finite as $J \to 0$, so far from the solution Newton's method
+       * can be drawn towards a spurious state of tiny volume.
+       *
        * @return The lateral stretch $\mu$.
        * @throws std::runtime_error if Newton's method does not converge in
-       *   50 iterations (relative stress residual 1e-12).
+       *   50 iterations (stress residual 1e-13 (|tau| + G) + 1e-14 K).
        */
       double
       solve(const MaterialModel<3> &       material,

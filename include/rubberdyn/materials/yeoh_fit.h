@@ -80,7 +80,7 @@ namespace rubberdyn
       {
         /** Root-mean-square stress error (GPa). */
         double rms_error;
-        /** Mean of |P_fit - P_data| / |P_data| (-). */
+        /** Mean of |P_fit - P_data| / |P_data| over points with P_data != 0 (-). */
         double mean_relative_error;
         /** Largest |P_fit - P_data| / |P_data| (-). */
         double max_relative_error;

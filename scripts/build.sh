@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine:
+#   scripts/build.sh run    install missing Debian packages, build (Release)
+#                           and run the default study
+#   scripts/build.sh test   the same set-up, then the whole test suite (ctest)
+#   scripts/build.sh build  set-up and build only
+# Idempotent: installed packages and an existing build/ are reused.
+set -euo pipefail
+
+cd "$(dirname "$0")/.."
+SOURCE_DIR=$(pwd)
+BUILD_DIR=${RUBBERDYN_BUILD_DIR:-$SOURCE_DIR/build}
+JOBS=${RUBBERDYN_JOBS:-$(nproc)}
+ACTION=${1:-build}
+
+PACKAGES=(cmake make g++ libdeal.ii-dev numdiff ccache openmpi-bin perl)
+
+install_missing_packages() {
+  local missing=()
+  for package in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+      missing+=("$package")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return
+  fi
+  echo "Installing Debian packages: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    sudo=sudo
+  fi
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+    cmake -S "$SOURCE_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+# Open MPI refuses to run as root without these (CI runs as root).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+install_missing_packages
+build
+case "$ACTION" in
+  build) ;;
+  run)
+    mkdir -p "$SOURCE_DIR/output"
+    cd "$SOURCE_DIR"
+    "$BUILD_DIR/rubberdyn" --default
+    ;;
+  test)
+    ctest --test-dir "$BUILD_DIR" -j "$JOBS" --output-on-failure
+    ;;
+  *)
+    echo "usage: scripts/build.sh [build|run|test]" >&2
+    exit 1
+    ;;
+esac
