@@ -1,0 +1,256 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
+
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include <cmath>
+
+namespace rubberdyn
+{
+  namespace time_integration
+  {
+    double
+    EnergyBalance::relative_error() const
+    {
+      const double present =
+        kinetic + internal + contact + bulk_viscosity_work;
+      const double supplied = initial + external_work;
+      const double scale    = std::max(std::abs(present),
+                                    std::abs(initial) + std::abs(external_work));
+      return scale > 0. ? std::abs(present - supplied) / scale : 0.;
+    }
+
+
+
+    ExplicitSolver::ExplicitSolver(
+      const DoFHandler<3, 3> &                                   dof_handler,
+      elements::SolidHexElements &                               elements,
+      contact::RigidPlaneContact &                               contact,
+      std::vector<RigidBody> &                                   bodies,
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+      const std::vector<double> &                                density_scaling,
+      const ExplicitSettings &                                   settings,
+      const MPI_Comm                                             comm)
+      : dof_handler(dof_handler)
+      , elements(elements)
+      , contact(contact)
+      , bodies(bodies)
+      , partitioner(partitioner)
+      , density_scaling(density_scaling)
+      , settings(settings)
+      , comm(comm)
+    {
+      for (VectorType *vector :
+           {&u, &v, &f, &mass, &inverse_mass, &gravity_force})
+        vector->reinit(partitioner);
+
+      // Direction of every locally owned dof.
+      std::vector<unsigned char> component(partitioner->locally_owned_size());
+      const FiniteElement<3> &   fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              if (partitioner->in_local_range(dof_indices[i]))
+                component[partitioner->global_to_local(dof_indices[i])] =
+                  fe.system_to_component_index(i).first;
+          }
+
+      // Lumped mass with and without mass scaling; gravity acts on the
+      // physical mass only (added mass is a numerical device, not weight).
+      VectorType physical_mass(partitioner);
+      elements.add_lumped_mass(mass, density_scaling);
+      elements.add_lumped_mass(physical_mass,
+                               std::vector<double>(density_scaling.size(), 1.));
+      mass.compress(VectorOperation::add);
+      physical_mass.compress(VectorOperation::add);
+      double masses[2] = {0., 0.};
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        {
+          inverse_mass.local_element(i) = 1. / mass.local_element(i);
+          gravity_force.local_element(i) =
+            physical_mass.local_element(i) * settings.gravity[component[i]];
+          // A node's mass appears once per direction.
+          masses[0] += physical_mass.local_element(i) / 3.;
+          masses[1] += mass.local_element(i) / 3.;
+        }
+      Utilities::MPI::sum(ArrayView<const double>(masses, 2),
+                          comm,
+                          ArrayView<double>(masses, 2));
+      total_physical_mass = masses[0];
+      total_added_mass    = masses[1] - masses[0];
+    }
+
+
+
+    void
+    ExplicitSolver::set_initial_velocity(const Tensor<1, 3> &velocity)
+    {
+      std::vector<unsigned char> component(partitioner->locally_owned_size());
+      const FiniteElement<3> &   fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              if (partitioner->in_local_range(dof_indices[i]))
+                v.local_element(partitioner->global_to_local(dof_indices[i])) =
+                  velocity[fe.system_to_component_index(i).first];
+          }
+      v.update_ghost_values();
+    }
+
+
+
+    void
+    ExplicitSolver::run(const double end_time, const std::function<void()> &monitor)
+    {
+      const unsigned int n_owned  = partitioner->locally_owned_size();
+      const unsigned int n_bodies = bodies.size();
+      if (!started)
+        {
+          // Initial energy: kinetic energy of the initial velocities.
+          double local = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            local += 0.5 * mass.local_element(i) * v.local_element(i) *
+                     v.local_element(i);
+          energy.initial = Utilities::MPI::sum(local, comm);
+          for (const RigidBody &body : bodies)
+            energy.initial += 0.5 * body.mass * body.velocity.norm_square();
+        }
+
+      std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
+      std::vector<double>       sums(5 + 3 * n_bodies);
+      double                    gravity_work_increment = 0.;
+      while (current_time < end_time * (1. - 1e-12))
+        {
+          // Forces at u^n: -f_int + f_contact + f_gravity.
+          f = 0.;
+          elements::ElementStepResult element_result;
+          elements.compute_forces(u, v, density_scaling, f, element_result);
+          f.compress(VectorOperation::add);
+          f *= -1.;
+          f += gravity_force;
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            plane_displacement[b] = bodies[b].displacement;
+          contact::ContactResult contact_result;
+          contact.add_forces(u, plane_displacement, f, contact_result);
+
+          // Collective 1: the stable step (negative: an element failed).
+          double local_step = std::min(element_result.min_time_step,
+                                       contact.stable_time_step(mass));
+          if (element_result.failure.failed)
+            local_step = -1.;
+          const double stable_step = Utilities::MPI::min(local_step, comm);
+          if (stable_step < 0.)
+            {
+              std::ostringstream message;
+              if (element_result.failure.failed)
+                message << "element " << element_result.failure.cell_id
+                        << " at (" << element_result.failure.position
+                        << ") mm failed: " << element_result.failure.message;
+              const std::vector<std::string> messages =
+                Utilities::MPI::all_gather(comm, message.str());
+              std::string text;
+              for (const std::string &m : messages)
+                if (!m.empty() && text.empty())
+                  text = m;
+              throw SolverFailure(text + ", at time " +
+                                  std::to_string(current_time) + " ms, step " +
+                                  std::to_string(step_number));
+            }
+          const double new_step = settings.time_step_scale * stable_step;
+          if (new_step < settings.minimum_time_step)
+            throw SolverFailure(
+              "the stable time step " + std::to_string(new_step) +
+              " ms fell below the minimum time step " +
+              std::to_string(settings.minimum_time_step) + " ms at time " +
+              std::to_string(current_time) + " ms, step " +
+              std::to_string(step_number));
+          const double average_step =
+            started ? 0.5 * (last_time_step + new_step) : 0.5 * new_step;
+
+          // Velocities of the solid to the next half step; kinetic energy
+          // at t_n from the mean of the half-step velocities.
+          double kinetic = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            {
+              const double v_old = v.local_element(i);
+              const double v_new =
+                v_old + average_step * inverse_mass.local_element(i) *
+                          f.local_element(i);
+              kinetic += 0.125 * mass.local_element(i) * (v_old + v_new) *
+                         (v_old + v_new);
+              v.local_element(i) = v_new;
+            }
+
+          // Collective 2: energies and the contact forces on the bodies.
+          sums[0] = kinetic;
+          sums[1] = element_result.internal_energy;
+          sums[2] = contact_result.penalty_energy;
+          sums[3] = element_result.bulk_viscosity_power;
+          sums[4] = gravity_work_increment;
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            for (unsigned int d = 0; d < 3; ++d)
+              sums[5 + 3 * b + d] = contact_result.force_on_plane[b][d];
+          Utilities::MPI::sum(ArrayView<const double>(sums),
+                              comm,
+                              ArrayView<double>(sums));
+
+          energy.kinetic  = sums[0];
+          energy.internal = sums[1];
+          energy.contact  = sums[2];
+          energy.bulk_viscosity_work += sums[3] * average_step;
+          energy.external_work += sums[4];
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            {
+              RigidBody &body = bodies[b];
+              for (unsigned int d = 0; d < 3; ++d)
+                body.contact_force[d] = sums[5 + 3 * b + d];
+              if (body.mass > 0.)
+                {
+                  Tensor<1, 3> v_new = body.velocity;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    if (body.free[d])
+                      v_new[d] += average_step *
+                                  (body.contact_force[d] / body.mass +
+                                   settings.gravity[d]);
+                  energy.kinetic +=
+                    0.125 * body.mass * (body.velocity + v_new).norm_square();
+                  body.velocity = v_new;
+                }
+            }
+
+          // Output sees the state at t_n and the step about to be taken.
+          last_time_step = new_step;
+          monitor();
+
+          // Displacements to t_{n+1}.
+          for (RigidBody &body : bodies)
+            {
+              const Tensor<1, 3> increment = new_step * body.velocity;
+              body.displacement += increment;
+              energy.external_work += body.mass * settings.gravity * increment;
+            }
+          gravity_work_increment = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            {
+              const double increment = new_step * v.local_element(i);
+              u.local_element(i) += increment;
+              gravity_work_increment += gravity_force.local_element(i) * increment;
+            }
+          u.update_ghost_values();
+          v.update_ghost_values();
+          elements.accept_history();
+
+          current_time += new_step;
+          ++step_number;
+          started = true;
+        }
+    }
+  } // namespace time_integration
+} // namespace rubberdyn
