@@ -48,6 +48,22 @@ namespace rubberdyn
         G[2][2]        = s * (F[0][0] * F[1][1] - F[0][1] * F[1][0]);
       }
 
+      // F = I + sum_a u_a (x) grad N_a.
+      inline void
+      deformation_gradient(const double u[8][3],
+                           const double grad[8][3],
+                           double       F[3][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              double sum = (r == c ? 1. : 0.);
+              for (unsigned int a = 0; a < 8; ++a)
+                sum += u[a][r] * grad[a][c];
+              F[r][c] = sum;
+            }
+      }
+
       // Volume / largest face area of the hexahedron with nodes x.
       inline double
       characteristic_length(const double x[8][3], const double volume)
@@ -249,14 +265,7 @@ namespace rubberdyn
 
           // Centre: F0, J0, g0 = F0^{-T} grad N(centre), volumetric rate.
           double F0[3][3];
-          for (unsigned int r = 0; r < 3; ++r)
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                double sum = (r == c ? 1. : 0.);
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  sum += ue[a][r] * e.grad_centre[a][c];
-                F0[r][c] = sum;
-              }
+          deformation_gradient(ue, e.grad_centre, F0);
           const double J0 = det3(F0);
           if (!(J0 > 0.))
             {
@@ -288,14 +297,7 @@ namespace rubberdyn
           for (unsigned int q = 0; q < n_q && !failed; ++q)
             {
               double F[3][3];
-              for (unsigned int r = 0; r < 3; ++r)
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    double sum = (r == c ? 1. : 0.);
-                    for (unsigned int a = 0; a < n_nodes; ++a)
-                      sum += ue[a][r] * e.grad[q][a][c];
-                    F[r][c] = sum;
-                  }
+              deformation_gradient(ue, e.grad[q], F);
               const double J = det3(F);
               if (!(J > 0.))
                 {
@@ -430,28 +432,22 @@ namespace rubberdyn
           const materials::MaterialModel<3> &law     = *laws[e.law];
           const unsigned int                 n_state = law.n_state_variables();
           scratch.resize(n_state);
-          Tensor<2, 3> F0;
-          for (unsigned int r = 0; r < 3; ++r)
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                F0[r][c] = (r == c ? 1. : 0.);
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  F0[r][c] +=
-                    u.local_element(e.dofs[a][r]) * e.grad_centre[a][c];
-              }
-          const double J0 = determinant(F0);
+          double ue[n_nodes][3], F0_raw[3][3];
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              ue[a][d] = u.local_element(e.dofs[a][d]);
+          deformation_gradient(ue, e.grad_centre, F0_raw);
+          const double J0 = det3(F0_raw);
           double       mises = 0., p = 0., J_mean = 0.;
           for (unsigned int q = 0; q < n_q; ++q)
             {
+              double F_raw[3][3];
+              deformation_gradient(ue, e.grad[q], F_raw);
               Tensor<2, 3> F;
               for (unsigned int r = 0; r < 3; ++r)
                 for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    F[r][c] = (r == c ? 1. : 0.);
-                    for (unsigned int a = 0; a < n_nodes; ++a)
-                      F[r][c] += u.local_element(e.dofs[a][r]) * e.grad[q][a][c];
-                  }
-              const double J = determinant(F);
+                  F[r][c] = F_raw[r][c];
+              const double J = det3(F_raw);
               if (!(J > 0.) || !(J0 > 0.))
                 continue;
               const Tensor<2, 3> F_bar =

@@ -46,7 +46,8 @@ namespace rubberdyn
         vector->reinit(partitioner);
 
       // Direction of every locally owned dof.
-      std::vector<unsigned char> component(partitioner->locally_owned_size());
+      std::vector<unsigned char> &component = dof_component;
+      component.resize(partitioner->locally_owned_size());
       const FiniteElement<3> &   fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -89,18 +90,8 @@ namespace rubberdyn
     void
     ExplicitSolver::set_initial_velocity(const Tensor<1, 3> &velocity)
     {
-      std::vector<unsigned char> component(partitioner->locally_owned_size());
-      const FiniteElement<3> &   fe = dof_handler.get_fe();
-      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned() || cell->is_ghost())
-          {
-            cell->get_dof_indices(dof_indices);
-            for (unsigned int i = 0; i < dof_indices.size(); ++i)
-              if (partitioner->in_local_range(dof_indices[i]))
-                v.local_element(partitioner->global_to_local(dof_indices[i])) =
-                  velocity[fe.system_to_component_index(i).first];
-          }
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        v.local_element(i) = velocity[dof_component[i]];
       v.update_ghost_values();
     }
 

@@ -159,6 +159,8 @@ namespace rubberdyn
       MPI_Comm                                           comm;
 
       VectorType u, v, f, mass, inverse_mass, gravity_force;
+      /** Direction (0, 1, 2) of each locally owned dof. */
+      std::vector<unsigned char> dof_component;
       double       current_time = 0., last_time_step = 0.;
       unsigned int step_number  = 0;
       EnergyBalance energy;
