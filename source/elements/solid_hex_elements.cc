@@ -414,16 +414,18 @@ namespace rubberdyn
 
 
 
-    void
-    SolidHexElements::cell_averages(const VectorType &  u,
-                                    std::vector<float> &von_mises,
-                                    std::vector<float> &pressure,
-                                    std::vector<float> &jacobian,
-                                    const unsigned int  n_active_cells) const
+    SolidHexElements::CellAverages
+    SolidHexElements::cell_averages(const VectorType & u,
+                                    const unsigned int n_active_cells) const
     {
-      von_mises.assign(n_active_cells, 0.f);
-      pressure.assign(n_active_cells, 0.f);
-      jacobian.assign(n_active_cells, 0.f);
+      CellAverages averages;
+      for (auto &component : averages.cauchy_stress)
+        component.assign(n_active_cells, 0.f);
+      averages.von_mises.assign(n_active_cells, 0.f);
+      averages.pressure.assign(n_active_cells, 0.f);
+      averages.jacobian.assign(n_active_cells, 0.f);
+      constexpr unsigned int row[6] = {0, 1, 2, 0, 0, 1};
+      constexpr unsigned int col[6] = {0, 1, 2, 1, 2, 2};
       const bool fbar = (settings.formulation == Formulation::fbar);
       std::vector<double>            scratch;
       materials::MaterialResponse<3> response;
@@ -438,7 +440,7 @@ namespace rubberdyn
               ue[a][d] = u.local_element(e.dofs[a][d]);
           deformation_gradient(ue, e.grad_centre, F0_raw);
           const double J0 = det3(F0_raw);
-          double       mises = 0., p = 0., J_mean = 0.;
+          double       mises = 0., p = 0., J_mean = 0., cauchy[6] = {};
           for (unsigned int q = 0; q < n_q; ++q)
             {
               double F_raw[3][3];
@@ -470,14 +472,19 @@ namespace rubberdyn
               const double                  J_bar = determinant(F_bar);
               const SymmetricTensor<2, 3> sigma =
                 response.kirchhoff_stress / J_bar;
+              for (unsigned int k = 0; k < 6; ++k)
+                cauchy[k] += sigma[row[k]][col[k]] / n_q;
               mises += std::sqrt(1.5) * deviator(sigma).norm() / n_q;
               p -= trace(sigma) / 3. / n_q;
               J_mean += J / n_q;
             }
-          von_mises[e.active_cell_index] = mises;
-          pressure[e.active_cell_index]  = p;
-          jacobian[e.active_cell_index]  = J_mean;
+          for (unsigned int k = 0; k < 6; ++k)
+            averages.cauchy_stress[k][e.active_cell_index] = cauchy[k];
+          averages.von_mises[e.active_cell_index] = mises;
+          averages.pressure[e.active_cell_index]  = p;
+          averages.jacobian[e.active_cell_index]  = J_mean;
         }
+      return averages;
     }
   } // namespace elements
 } // namespace rubberdyn

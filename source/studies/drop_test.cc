@@ -291,15 +291,19 @@ namespace rubberdyn
         }
       postprocess::FieldOutput fields(p.output_directory, "solution", comm);
       const auto write_fields = [&]() {
-        std::vector<float> mises, pressure, J;
-        const unsigned int n_cells = triangulation.n_active_cells();
-        elements.cell_averages(solver.displacement(), mises, pressure, J,
-                               n_cells);
+        const auto averages = elements.cell_averages(
+          solver.displacement(), triangulation.n_active_cells());
+        const char *names[6] = {"cauchy_stress_xx", "cauchy_stress_yy",
+                                "cauchy_stress_zz", "cauchy_stress_xy",
+                                "cauchy_stress_xz", "cauchy_stress_yz"};
+        std::vector<std::pair<std::string, std::vector<float>>> cell_data;
+        for (unsigned int k = 0; k < 6; ++k)
+          cell_data.emplace_back(names[k], averages.cauchy_stress[k]);
+        cell_data.emplace_back("von_mises_stress", averages.von_mises);
+        cell_data.emplace_back("pressure", averages.pressure);
+        cell_data.emplace_back("J", averages.jacobian);
         fields.write(dof_handler, solver.displacement(), solver.velocity(),
-                     {{"von_mises_stress", mises},
-                      {"pressure", pressure},
-                      {"J", J}},
-                     solver.time());
+                     cell_data, solver.time());
       };
 
       double next_history = 0., next_field = 0., max_energy_error = 0.;

@@ -155,17 +155,26 @@ namespace rubberdyn
       void
       accept_history();
 
+      /** Cell averages of the Gauss-point values, for output. */
+      struct CellAverages
+      {
+        /** Cauchy stress components xx, yy, zz, xy, xz, yz (GPa). */
+        std::vector<float> cauchy_stress[6];
+        /** Von Mises stress (GPa). */
+        std::vector<float> von_mises;
+        /** Pressure, positive in compression (GPa). */
+        std::vector<float> pressure;
+        /** Jacobian determinant J. */
+        std::vector<float> jacobian;
+      };
+
       /**
-       * Cell averages for output: von Mises stress, pressure (GPa, positive
-       * in compression) and J, per locally owned active cell in the order of
-       * the triangulation's active cell iterator (other cells zero).
+       * Cell averages at displacement @p u, one value per active cell in the
+       * order of the triangulation's active cell iterator (locally owned
+       * cells filled, the others zero).
        */
-      void
-      cell_averages(const VectorType &  u,
-                    std::vector<float> &von_mises,
-                    std::vector<float> &pressure,
-                    std::vector<float> &jacobian,
-                    const unsigned int  n_active_cells) const;
+      CellAverages
+      cell_averages(const VectorType &u, const unsigned int n_active_cells) const;
 
       /** The history of all Gauss points, for checkpoints. */
       std::vector<double> &
