@@ -354,13 +354,10 @@ namespace rubberdyn
               const double rate = -volumetric_rate;
               Q                 = settings.bulk_viscosity_linear * wave_speed +
                   settings.bulk_viscosity_quadratic * length * rate;
-              // q = rho l (C_q l rate^2 + C_l c rate), rho = rho0 / J0 the
-              // current density (mass scaling included).
+              // q = rho l (C_q l rate^2 + C_l c rate) = rho l Q rate, with
+              // rho = rho0 / J0 the current density (mass scaling included).
               const double rho = law.density() * density_scaling[i] / J0;
-              q_visc           = rho * length *
-                       (settings.bulk_viscosity_quadratic * length * rate *
-                          rate +
-                        settings.bulk_viscosity_linear * wave_speed * rate);
+              q_visc           = rho * length * Q * rate;
               result.bulk_viscosity_power += q_visc * rate * current_volume;
             }
           result.min_time_step =

@@ -22,8 +22,8 @@ namespace rubberdyn
     void
     FieldOutput::write(
       const DoFHandler<3, 3> &                          dof_handler,
-      const LinearAlgebra::distributed::Vector<double> &displacement,
-      const LinearAlgebra::distributed::Vector<double> &velocity,
+      const VectorType &displacement,
+      const VectorType &velocity,
       const std::vector<std::pair<std::string, std::vector<float>>> &cell_data,
       const double                                                   time)
     {

@@ -268,7 +268,6 @@ namespace rubberdyn
       time_integration::ExplicitSettings settings;
       settings.time_step_scale        = p.time_step_scale;
       settings.minimum_time_step      = p.minimum_time_step;
-      settings.mass_scaling_time_step = p.mass_scaling_time_step;
       settings.gravity                = -p.gravity * up;
       time_integration::ExplicitSolver solver(dof_handler, elements, plates,
                                               bodies, partitioner,

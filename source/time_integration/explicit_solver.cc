@@ -32,8 +32,7 @@ namespace rubberdyn
       const std::vector<double> &                                density_scaling,
       const ExplicitSettings &                                   settings,
       const MPI_Comm                                             comm)
-      : dof_handler(dof_handler)
-      , elements(elements)
+      : elements(elements)
       , contact(contact)
       , bodies(bodies)
       , partitioner(partitioner)
@@ -46,8 +45,7 @@ namespace rubberdyn
         vector->reinit(partitioner);
 
       // Direction of every locally owned dof.
-      std::vector<unsigned char> &component = dof_component;
-      component.resize(partitioner->locally_owned_size());
+      dof_component.resize(partitioner->locally_owned_size());
       const FiniteElement<3> &   fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -56,7 +54,7 @@ namespace rubberdyn
             cell->get_dof_indices(dof_indices);
             for (unsigned int i = 0; i < dof_indices.size(); ++i)
               if (partitioner->in_local_range(dof_indices[i]))
-                component[partitioner->global_to_local(dof_indices[i])] =
+                dof_component[partitioner->global_to_local(dof_indices[i])] =
                   fe.system_to_component_index(i).first;
           }
 
@@ -73,7 +71,7 @@ namespace rubberdyn
         {
           inverse_mass.local_element(i) = 1. / mass.local_element(i);
           gravity_force.local_element(i) =
-            physical_mass.local_element(i) * settings.gravity[component[i]];
+            physical_mass.local_element(i) * settings.gravity[dof_component[i]];
           // A node's mass appears once per direction.
           masses[0] += physical_mass.local_element(i) / 3.;
           masses[1] += mass.local_element(i) / 3.;

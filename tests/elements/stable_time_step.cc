@@ -68,7 +68,7 @@ main(int argc, char **argv)
       elements.initialize(dof_handler, partitioner, {{0, &steel}}, {});
       const double reference = elements.reference_time_steps()[0];
 
-      rubberdyn::elements::VectorType u(partitioner), v(partitioner),
+      rubberdyn::VectorType u(partitioner), v(partitioner),
         f(partitioner);
       rubberdyn::elements::ElementStepResult result;
       elements.compute_forces(u, v, {1.}, f, result);

@@ -4,7 +4,7 @@
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
-#include <deal.II/lac/la_parallel_vector.h>
+#include <rubberdyn/base/vector.h>
 
 #include <memory>
 #include <set>
@@ -24,7 +24,6 @@ namespace rubberdyn
   namespace contact
   {
     using namespace dealii;
-    using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /**
      * A rigid plane: the points x with n . (x - p) >= 0 are outside it.

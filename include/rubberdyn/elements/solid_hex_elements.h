@@ -3,7 +3,7 @@
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
-#include <deal.II/lac/la_parallel_vector.h>
+#include <rubberdyn/base/vector.h>
 
 #include <rubberdyn/materials/material_model.h>
 
@@ -28,8 +28,6 @@ namespace rubberdyn
   {
     using namespace dealii;
 
-    /** The vector type of the explicit solver. */
-    using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /** Where and why an element failed. */
     struct ElementFailure

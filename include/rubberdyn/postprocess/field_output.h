@@ -2,7 +2,7 @@
 #define rubberdyn_postprocess_field_output_h
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/la_parallel_vector.h>
+#include <rubberdyn/base/vector.h>
 
 #include <string>
 #include <utility>
@@ -46,8 +46,8 @@ namespace rubberdyn
        */
       void
       write(const DoFHandler<3, 3> &                          dof_handler,
-            const LinearAlgebra::distributed::Vector<double> &displacement,
-            const LinearAlgebra::distributed::Vector<double> &velocity,
+            const VectorType &displacement,
+            const VectorType &velocity,
             const std::vector<std::pair<std::string, std::vector<float>>>
               &          cell_data,
             const double time);

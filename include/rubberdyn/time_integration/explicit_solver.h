@@ -3,7 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
-#include <deal.II/lac/la_parallel_vector.h>
+#include <rubberdyn/base/vector.h>
 
 #include <rubberdyn/contact/rigid_plane_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
@@ -28,7 +28,6 @@ namespace rubberdyn
   namespace time_integration
   {
     using namespace dealii;
-    using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /**
      * A rigid body that carries one rigid plane of the contact layer, free
@@ -70,8 +69,6 @@ namespace rubberdyn
       double time_step_scale = 0.9;
       /** The run stops with an error below this step (ms). */
       double minimum_time_step = 1e-8;
-      /** Target step for mass scaling (ms); 0 switches it off. */
-      double mass_scaling_time_step = 0.;
       /** Gravitational acceleration (mm/ms^2), on solid and bodies. */
       Tensor<1, 3> gravity;
     };
@@ -149,7 +146,6 @@ namespace rubberdyn
       double physical_mass() const { return total_physical_mass; }
 
     private:
-      const DoFHandler<3, 3> &                           dof_handler;
       elements::SolidHexElements &                       elements;
       contact::RigidPlaneContact &                       contact;
       std::vector<RigidBody> &                           bodies;
