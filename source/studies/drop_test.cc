@@ -5,14 +5,12 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/manifold_lib.h>
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/contact/rigid_plane_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/geometry/standing_cylinder.h>
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/postprocess/field_output.h>
 #include <rubberdyn/studies/drop_test.h>
@@ -202,20 +200,9 @@ namespace rubberdyn
       const bool root = (Utilities::MPI::this_mpi_process(comm) == 0);
       const auto wall_start = std::chrono::steady_clock::now();
 
-      // Mesh: deal.II's cylinder along x, turned so that its axis is z and
-      // it stands on z = 0. Boundary ids: 0 hull, 1 bottom, 2 top.
-      Triangulation<3> coarse;
-      GridGenerator::subdivided_cylinder(coarse, 2, p.diameter / 2.,
-                                         p.height / 2.);
-      GridTools::transform(
-        [&](const Point<3> &x) {
-          return Point<3>(x[1], x[2], x[0] + p.height / 2.);
-        },
-        coarse);
       parallel::distributed::Triangulation<3> triangulation(comm);
-      triangulation.copy_triangulation(coarse);
-      triangulation.set_manifold(0, CylindricalManifold<3>(2));
-      triangulation.refine_global(p.refinement);
+      geometry::make_standing_cylinder(triangulation, p.diameter, p.height,
+                                       p.refinement);
 
       const FESystem<3> fe(FE_Q<3>(1), 3);
       DoFHandler<3>     dof_handler(triangulation);
@@ -255,7 +242,10 @@ namespace rubberdyn
 
       contact::RigidPlaneContact plates;
       const Tensor<1, 3>         up({0., 0., 1.});
-      plates.initialize(dof_handler, partitioner, {0, 1, 2},
+      plates.initialize(dof_handler, partitioner,
+                        {geometry::cylinder_boundary::hull,
+                         geometry::cylinder_boundary::bottom,
+                         geometry::cylinder_boundary::top},
                         {p.rubber->bulk_modulus()}, p.penalty_scale,
                         {{Point<3>(0., 0., 0.), up},
                          {Point<3>(0., 0., p.height), -up}});
