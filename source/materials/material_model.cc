@@ -1,4 +1,5 @@
 #include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/materials/stress_kernel.h>
 
 namespace rubberdyn
 {
@@ -17,6 +18,15 @@ namespace rubberdyn
     void
     MaterialModel<dim>::initialize_state(const ArrayView<double> &) const
     {}
+
+
+
+    template <int dim>
+    std::unique_ptr<StressKernel>
+    MaterialModel<dim>::create_stress_kernel() const
+    {
+      return nullptr;
+    }
 
 
 

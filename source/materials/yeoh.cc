@@ -5,6 +5,7 @@
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/materials/yeoh.h>
+#include <rubberdyn/materials/yeoh_stress_kernel.h>
 
 #include <cmath>
 #include <ostream>
@@ -257,6 +258,16 @@ namespace rubberdyn
           << " 1/GPa, density = " << format_short(rho)
           << " kg/mm^3, wave speed = " << format_short(reference_wave_speed())
           << " mm/ms" << std::endl;
+    }
+
+
+
+    template <int dim>
+    std::unique_ptr<StressKernel>
+    Yeoh<dim>::create_stress_kernel() const
+    {
+      return std::make_unique<YeohStressKernel>(
+        std::array<double, 3>{{C10, C20, C30}}, inverse_d, rho);
     }
 
 

@@ -6,6 +6,7 @@
 #include <rubberdyn/base/vector.h>
 
 #include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/materials/stress_kernel.h>
 
 #include <limits>
 #include <map>
@@ -27,6 +28,64 @@ namespace rubberdyn
   namespace elements
   {
     using namespace dealii;
+
+
+    namespace internal
+    {
+      constexpr unsigned int n_nodes = 8;
+      constexpr unsigned int n_q     = 8;
+      /**
+       * Elements evaluated together, one per SIMD lane: the hot loops run
+       * over lanes innermost, so that GCC turns them into vector
+       * instructions (4 doubles with AVX2).
+       */
+      constexpr unsigned int lanes = 4;
+
+      /**
+       * Shape functions on the reference cell $[0,1]^3$ (the same for every
+       * element): values $N_a$ at the 2x2x2 Gauss points [q][a] and
+       * gradients $\partial N_a / \partial \xi_k$ at the centre [a][k].
+       * (Gradients at the Gauss points are applied by sum factorisation.)
+       */
+      struct ReferenceShapes
+      {
+        double values[n_q][n_nodes];
+        double centre[n_nodes][3];
+      };
+
+      /**
+       * Geometry of `lanes` elements of one law in structure-of-arrays
+       * layout, the last index being the lane. Unused lanes of the last block
+       * of a law repeat its first element and are never scattered.
+       */
+      struct HexBlock
+      {
+        /** Local indices into the ghosted vectors, [node][component]. */
+        unsigned int dofs[n_nodes][3][lanes];
+        /**
+         * Inverse reference Jacobians $\partial\xi_k/\partial X_c$ at the
+         * Gauss points [q][k][c] and at the centre [k][c].
+         */
+        double inverse_jacobian[n_q][3][3][lanes];
+        double inverse_jacobian_centre[3][3][lanes];
+        /** Gauss weights times reference Jacobians (mm^3). */
+        double JxW[n_q][lanes];
+        /** Reference nodal coordinates (mm). */
+        double X[n_nodes][3][lanes];
+        /** Index of each lane's element in the element numbering. */
+        unsigned int element[lanes];
+        /** Number of lanes in use. */
+        unsigned int n_active;
+        /** Index of the law. */
+        unsigned int law;
+        /**
+         * History of Gauss point q of lane l starts at history_offset + (q
+         * lanes + l) n_state.
+         */
+        unsigned int history_offset;
+      };
+    } // namespace internal
+
 
 
     /** Where and why an element failed. */
@@ -85,8 +144,14 @@ namespace rubberdyn
      *          \,(g^0_a - g_a)\right],\quad g_a = F^{-T}\nabla_X N_a,\;
      *   g^0_a = F_0^{-T}\nabla_X N_a(\xi_0).
      * @f]
-     * Reference shape gradients, quadrature weights and local dof indices
-     * are computed once, so a force evaluation touches no FEValues.
+     * Written as $f_a = \sum_q B_q \hat\nabla N_a(\xi_q) + S\,g^0_a$ with
+     * $B_q = w_q(\bar\tau - \tfrac13\mathrm{tr}\bar\tau\,I)F^{-T}
+     * (\partial\xi/\partial X)^T_q$ and $S = \sum_q w_q \tfrac13
+     * \mathrm{tr}\bar\tau$, so only the reference-cell gradients
+     * $\hat\nabla N_a$ (the same for every element) and the inverse
+     * reference Jacobians are stored; no FEValues is touched per step.
+     * Elements are evaluated four at a time (internal::HexBlock), and the
+     * law through its batched materials::StressKernel.
      *
      * Bulk viscosity (LS-DYNA style): in compression a pressure
      * $q = \rho\,l\,(C_q\,l\,\dot\varepsilon_v^2 - C_l\,c\,\dot\varepsilon_v)$
@@ -114,7 +179,10 @@ namespace rubberdyn
                    &                    material_by_id,
                  const ElementSettings &settings);
 
-      /** Number of locally owned elements. */
+      /**
+       * Number of locally owned elements. Elements are numbered law by law
+       * (the numbering of density_scaling and reference_time_steps()).
+       */
       unsigned int
       n_elements() const;
 
@@ -179,25 +247,15 @@ namespace rubberdyn
       history();
 
     private:
-      static constexpr unsigned int n_nodes = 8;
-      static constexpr unsigned int n_q     = 8;
+      static constexpr unsigned int n_nodes = internal::n_nodes;
+      static constexpr unsigned int n_q     = internal::n_q;
+      static constexpr unsigned int lanes   = internal::lanes;
 
-      struct ElementData
+      /** Per element, what the hot loop does not need. */
+      struct ElementInfo
       {
-        /** Local indices into the ghosted vectors, [node][component]. */
-        unsigned int dofs[n_nodes][3];
-        /** Reference gradients at the Gauss points, [q][node][direction]. */
-        double grad[n_q][n_nodes][3];
-        /** Reference gradients at the centre. */
-        double grad_centre[n_nodes][3];
-        /** Gauss weights times reference Jacobians (mm^3). */
-        double JxW[n_q];
-        /** Reference nodal coordinates (mm), for the stable step. */
-        double X[n_nodes][3];
-        /** Index of the law in `laws`. */
-        unsigned int law;
-        /** Offset of its first Gauss point's history in `history_*`. */
-        unsigned int history_offset;
+        /** Block and lane of the element in `blocks`. */
+        unsigned int block, lane;
         /** Index of the cell in the active cell iterator order. */
         unsigned int active_cell_index;
         /** Cell id and reference centre, for failure reports. */
@@ -205,10 +263,13 @@ namespace rubberdyn
         Point<3>    centre;
       };
 
-      std::vector<ElementData>                       elements;
-      std::vector<const materials::MaterialModel<3> *> laws;
-      ElementSettings                                settings;
-      std::vector<double>                            history_old, history_new;
+      internal::ReferenceShapes              reference;
+      std::vector<internal::HexBlock>         blocks;
+      std::vector<ElementInfo>                elements;
+      std::vector<const materials::MaterialModel<3> *>       laws;
+      std::vector<std::unique_ptr<materials::StressKernel>> kernels;
+      ElementSettings                         settings;
+      std::vector<double>                     history_old, history_new;
     };
   } // namespace elements
 } // namespace rubberdyn

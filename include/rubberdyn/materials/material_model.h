@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 
 namespace rubberdyn
@@ -73,6 +74,8 @@ namespace rubberdyn
      * deformation is plane strain ($F_{33} = 1$), and the returned stress
      * and tangent are the in-plane components.
      */
+    class StressKernel;
+
     template <int dim>
     class MaterialModel
     {
@@ -145,6 +148,15 @@ namespace rubberdyn
        */
       virtual void
       print_constants(std::ostream &out) const = 0;
+
+      /**
+       * A batched 3D kernel of this law for the explicit elements (see
+       * StressKernel), or nullptr if the law has none and is to be
+       * evaluated point by point. It must give the same results as
+       * evaluate() to rounding (tests/materials/stress_kernels).
+       */
+      virtual std::unique_ptr<StressKernel>
+      create_stress_kernel() const;
     };
 
 

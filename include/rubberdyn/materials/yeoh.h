@@ -103,6 +103,10 @@ namespace rubberdyn
       void
       print_constants(std::ostream &out) const override;
 
+      /** A YeohStressKernel with this law's constants. */
+      std::unique_ptr<StressKernel>
+      create_stress_kernel() const override;
+
     private:
       /** The 3D evaluation that both dimensions use. */
       void

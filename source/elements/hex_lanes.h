@@ -1,0 +1,249 @@
+#ifndef rubberdyn_source_elements_hex_lanes_h
+#define rubberdyn_source_elements_hex_lanes_h
+
+// Kinematics of a block of hexahedra, one element per SIMD lane (private to
+// source/elements). Written with GCC's vector extensions: a `Lanes` value
+// holds one double per element of the block, and arithmetic on it is one
+// AVX2 instruction (two SSE2 instructions in the baseline clone). This is
+// explicit on purpose: GCC's auto-vectoriser unrolls 4-trip lane loops
+// before it looks at them and then vectorises some and not others.
+
+#include <rubberdyn/base/simd_math.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace rubberdyn
+{
+  namespace elements
+  {
+    namespace lanes_of
+    {
+      using internal::HexBlock;
+      using internal::n_nodes;
+      constexpr unsigned int L = internal::lanes;
+
+      /** One double per lane. */
+      typedef double Lanes __attribute__((vector_size(L * sizeof(double))));
+
+      // Unaligned loads and stores of L consecutive doubles.
+      inline Lanes
+      load(const double *values)
+      {
+        Lanes v;
+        std::memcpy(&v, values, sizeof(v));
+        return v;
+      }
+
+      inline void
+      store(const Lanes &v, double *values)
+      {
+        std::memcpy(values, &v, sizeof(v));
+      }
+
+      inline Lanes
+      broadcast(const double x)
+      {
+        return Lanes{} + x;
+      }
+
+      inline Lanes
+      max(const Lanes &a, const Lanes &b)
+      {
+        return a > b ? a : b;
+      }
+
+      inline Lanes
+      sqrt(const Lanes &x)
+      {
+        Lanes y;
+        for (unsigned int l = 0; l < L; ++l)
+          y[l] = std::sqrt(x[l]);
+        return y;
+      }
+
+      // Values of a ghosted vector at the nodes of the block's elements.
+      inline void
+      gather(const HexBlock &block, const double *vector, Lanes values[n_nodes][3])
+      {
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            for (unsigned int l = 0; l < L; ++l)
+              values[a][d][l] = vector[block.dofs[a][d][l]];
+      }
+
+      // Sum factorisation on the reference cube [0,1]^3 with deal.II's
+      // lexicographic numbering: node a = i0 + 2 i1 + 4 i2 has N_a =
+      // phi_i0(xi_0) phi_i1(xi_1) phi_i2(xi_2), phi_0 = 1 - t, phi_1 = t, and
+      // Gauss point q = m0 + 2 m1 + 4 m2 sits at xi_d = gauss[m_d]. So
+      // dN_a/dxi_k at q = (+-1) phi_ip(gauss[m_p]) phi_is(gauss[m_s]), with
+      // p, s the other two directions: the reference gradient of a field
+      // along k is a bilinear interpolation of its 4 edge differences along
+      // k, and does not depend on m_k.
+      constexpr double gauss_low  = 0.21132486540518711775; // (1 - 1/sqrt3)/2
+      constexpr double gauss_high = 0.78867513459481288225; // (1 + 1/sqrt3)/2
+      // phi_b(gauss[m]) as [m][b].
+      constexpr double phi_at_gauss[2][2] = {{gauss_high, gauss_low},
+                                             {gauss_low, gauss_high}};
+
+      inline constexpr unsigned int
+      corner(const unsigned int k,
+             const unsigned int bit_k,
+             const unsigned int bit_p,
+             const unsigned int bit_s)
+      {
+        return (bit_k << k) | (bit_p << ((k + 1) % 3)) |
+               (bit_s << ((k + 2) % 3));
+      }
+
+      // Reference gradients H[r][k] = sum_a u_a[r] dN_a/dxi_k of the nodal
+      // field u at the 8 Gauss points and at the centre.
+      inline void
+      reference_gradients(const Lanes u[n_nodes][3],
+                          Lanes       H[internal::n_q][3][3],
+                          Lanes       H_centre[3][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              Lanes D[2][2];
+              for (unsigned int bp = 0; bp < 2; ++bp)
+                for (unsigned int bs = 0; bs < 2; ++bs)
+                  D[bp][bs] =
+                    u[corner(k, 1, bp, bs)][r] - u[corner(k, 0, bp, bs)][r];
+              H_centre[r][k] = 0.25 * (D[0][0] + D[0][1] + D[1][0] + D[1][1]);
+              Lanes T[2][2];
+              for (unsigned int bp = 0; bp < 2; ++bp)
+                for (unsigned int ms = 0; ms < 2; ++ms)
+                  T[bp][ms] = phi_at_gauss[ms][0] * D[bp][0] +
+                              phi_at_gauss[ms][1] * D[bp][1];
+              for (unsigned int mp = 0; mp < 2; ++mp)
+                for (unsigned int ms = 0; ms < 2; ++ms)
+                  {
+                    const Lanes value = phi_at_gauss[mp][0] * T[0][ms] +
+                                        phi_at_gauss[mp][1] * T[1][ms];
+                    H[corner(k, 0, mp, ms)][r][k] = value;
+                    H[corner(k, 1, mp, ms)][r][k] = value;
+                  }
+            }
+      }
+
+      // The transpose: f_a[r] += sum_q sum_k B_q[r][k] dN_a/dxi_k(q).
+      inline void
+      add_reference_divergence(const Lanes B[internal::n_q][3][3],
+                               Lanes       f[n_nodes][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              Lanes P[2][2];
+              for (unsigned int mp = 0; mp < 2; ++mp)
+                for (unsigned int ms = 0; ms < 2; ++ms)
+                  P[mp][ms] = B[corner(k, 0, mp, ms)][r][k] +
+                              B[corner(k, 1, mp, ms)][r][k];
+              Lanes T[2][2];
+              for (unsigned int mp = 0; mp < 2; ++mp)
+                for (unsigned int bs = 0; bs < 2; ++bs)
+                  T[mp][bs] = phi_at_gauss[0][bs] * P[mp][0] +
+                              phi_at_gauss[1][bs] * P[mp][1];
+              for (unsigned int bp = 0; bp < 2; ++bp)
+                for (unsigned int bs = 0; bs < 2; ++bs)
+                  {
+                    const Lanes E = phi_at_gauss[0][bp] * T[0][bs] +
+                                    phi_at_gauss[1][bp] * T[1][bs];
+                    f[corner(k, 1, bp, bs)][r] += E;
+                    f[corner(k, 0, bp, bs)][r] -= E;
+                  }
+            }
+      }
+
+      // F = I + H dxi/dX.
+      inline void
+      deformation_gradient(const Lanes  H[3][3],
+                           const double inverse_jacobian[3][3][L],
+                           Lanes        F[3][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int c = 0; c < 3; ++c)
+            F[r][c] = (r == c ? 1. : 0.) +
+                      H[r][0] * load(inverse_jacobian[0][c]) +
+                      H[r][1] * load(inverse_jacobian[1][c]) +
+                      H[r][2] * load(inverse_jacobian[2][c]);
+      }
+
+      // J = det F and G = F^{-T} = cof(F) / J.
+      inline void
+      determinant_and_inverse_transpose(const Lanes F[3][3], Lanes &J, Lanes G[3][3])
+      {
+        const Lanes c00 = F[1][1] * F[2][2] - F[1][2] * F[2][1];
+        const Lanes c01 = F[1][2] * F[2][0] - F[1][0] * F[2][2];
+        const Lanes c02 = F[1][0] * F[2][1] - F[1][1] * F[2][0];
+        J               = F[0][0] * c00 + F[0][1] * c01 + F[0][2] * c02;
+        const Lanes s   = 1. / J;
+        G[0][0]         = s * c00;
+        G[0][1]         = s * c01;
+        G[0][2]         = s * c02;
+        G[1][0]         = s * (F[0][2] * F[2][1] - F[0][1] * F[2][2]);
+        G[1][1]         = s * (F[0][0] * F[2][2] - F[0][2] * F[2][0]);
+        G[1][2]         = s * (F[0][1] * F[2][0] - F[0][0] * F[2][1]);
+        G[2][0]         = s * (F[0][1] * F[1][2] - F[0][2] * F[1][1]);
+        G[2][1]         = s * (F[0][2] * F[1][0] - F[0][0] * F[1][2]);
+        G[2][2]         = s * (F[0][0] * F[1][1] - F[0][1] * F[1][0]);
+      }
+
+      // Volume / largest face area of hexahedra with nodes x (deal.II's
+      // lexicographic vertex order). The area of a planar or warped face
+      // is taken as half the norm of the cross product of its diagonals.
+      inline Lanes
+      characteristic_length(const Lanes x[n_nodes][3], const Lanes &volume)
+      {
+        // Faces as (v0, v1, v2, v3) with diagonals v0-v3 and v1-v2.
+        constexpr unsigned int faces[6][4] = {{0, 2, 4, 6},
+                                              {1, 3, 5, 7},
+                                              {0, 1, 4, 5},
+                                              {2, 3, 6, 7},
+                                              {0, 1, 2, 3},
+                                              {4, 5, 6, 7}};
+        Lanes max_area_square = {};
+        for (const auto &face : faces)
+          {
+            Lanes d1[3], d2[3];
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                d1[i] = x[face[3]][i] - x[face[0]][i];
+                d2[i] = x[face[2]][i] - x[face[1]][i];
+              }
+            const Lanes c0  = d1[1] * d2[2] - d1[2] * d2[1];
+            const Lanes c1  = d1[2] * d2[0] - d1[0] * d2[2];
+            const Lanes c2  = d1[0] * d2[1] - d1[1] * d2[0];
+            max_area_square = max(max_area_square,
+                                  0.25 * (c0 * c0 + c1 * c1 + c2 * c2));
+          }
+        return volume / sqrt(max_area_square);
+      }
+
+      // x^(-1/3) per lane, as simd_math::inverse_cube_root.
+      inline Lanes
+      inverse_cube_root(const Lanes &x)
+      {
+        typedef float Floats __attribute__((vector_size(L * sizeof(float))));
+        typedef std::int32_t Ints
+          __attribute__((vector_size(L * sizeof(std::int32_t))));
+        const Floats x_float = __builtin_convertvector(x, Floats);
+        Ints         bits;
+        std::memcpy(&bits, &x_float, sizeof(bits));
+        bits = simd_math::inverse_cube_root_magic - bits / 3;
+        Floats y_float;
+        std::memcpy(&y_float, &bits, sizeof(bits));
+        Lanes y = __builtin_convertvector(y_float, Lanes);
+        for (unsigned int k = 0; k < simd_math::inverse_cube_root_newton_steps;
+             ++k)
+          y = y * (4. - x * (y * y * y)) * (1. / 3.);
+        return y;
+      }
+    } // namespace lanes_of
+  }   // namespace elements
+} // namespace rubberdyn
+
+#endif
