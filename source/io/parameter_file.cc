@@ -10,6 +10,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -31,6 +32,85 @@ namespace rubberdyn
           std::regex_replace(info.str(), std::regex("\\s+"), " ");
         text = std::regex_replace(text, std::regex("^ +| +$"), "");
         return text;
+      }
+
+      /**
+       * The subsection path ("A/B/") in force at line @p line_number of
+       * @p filename, found by replaying its 'subsection' and 'end' lines:
+       * ParameterHandler's own path is private, and its messages name an
+       * offending entry without the subsections it lives in.
+       */
+      std::string
+      subsection_path_at(const std::string &filename,
+                         const unsigned int line_number)
+      {
+        std::ifstream            file(filename);
+        std::vector<std::string> path;
+        std::string              line;
+        for (unsigned int n = 1; n < line_number && std::getline(file, line);
+             ++n)
+          {
+            line = line.substr(0, line.find('#'));
+            line = std::regex_replace(line, std::regex("\\s+"), " ");
+            line = std::regex_replace(line, std::regex("^ +| +$"), "");
+            if (line.rfind("subsection ", 0) == 0)
+              path.push_back(line.substr(11));
+            else if (line == "end" && !path.empty())
+              path.pop_back();
+          }
+        std::string result;
+        for (const std::string &name : path)
+          result += name + '/';
+        return result;
+      }
+
+      /**
+       * The message of a parse error of @p filename, with the full path of
+       * the entry or subsection it is about where ParameterHandler gives
+       * only its name ("Line <7> of file <f>: The entry value -5 for the
+       * entry named Impactor mass does not match ...").
+       */
+      std::string
+      parse_error_message(const std::string &filename, const std::string &text)
+      {
+        // The file name may hold regex metacharacters: match it literally.
+        // (deal.II 9.4 omits the '>' after it in some messages.)
+        std::smatch line_match;
+        if (!std::regex_search(text,
+                               line_match,
+                               std::regex("^Line <([0-9]+)> of file <")))
+          return text;
+        std::string rest = line_match.suffix();
+        if (rest.rfind(filename, 0) != 0)
+          return text;
+        rest.erase(0, filename.size());
+        rest = std::regex_replace(rest, std::regex("^>?: "), "");
+        const unsigned int line  = std::stoul(line_match[1]);
+        const std::string  path  = subsection_path_at(filename, line);
+        const std::string  where = "line " + std::to_string(line) + ", ";
+        std::smatch        m;
+        if (std::regex_search(rest,
+                              m,
+                              std::regex("^The entry value (.*) for the entry "
+                                         "named (.*) does not match the given "
+                                         "pattern: (.*)$")))
+          return where + "entry '" + path + m[2].str() + "': the value '" +
+                 m[1].str() + "' is not allowed; allowed: " + m[3].str();
+        if (std::regex_search(rest,
+                              m,
+                              std::regex("^No entry with name <(.*)> was "
+                                         "declared in the current subsection")))
+          return where + "entry '" + path + m[1].str() +
+                 "': no such entry is declared (misspelt, or in the wrong "
+                 "subsection?)";
+        if (std::regex_search(rest,
+                              m,
+                              std::regex("no such subsection to be entered: "
+                                         "(.*)$")))
+          return where + "subsection '" + path +
+                 std::regex_replace(m[1].str(), std::regex("\\.$"), "") +
+                 "': no such subsection is declared";
+        return where + rest;
       }
 
       /** Undo ParameterHandler's mangling of names ("_20" for ' ', ...). */
@@ -126,7 +206,9 @@ namespace rubberdyn
         }
       catch (const dealii::ExceptionBase &exception)
         {
-          throw InputError(filename, message_of(exception));
+          throw InputError(filename,
+                           parse_error_message(filename,
+                                               message_of(exception)));
         }
     }
 

@@ -2,6 +2,7 @@
 #define rubberdyn_contact_rigid_plane_contact_h
 
 #include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <rubberdyn/base/vector.h>

@@ -1,0 +1,251 @@
+// Shared set-up of the bar tests of the explicit engine: a slender
+// prismatic bar of trilinear hexahedra, distributed over MPI_COMM_WORLD
+// exactly as the drop-test study distributes its cylinder
+// (source/studies/drop_test.cc), and a step load that tracks the wave
+// front by the mean axial velocity of cross-sections.
+#ifndef rubberdyn_tests_explicit_bar_h
+#define rubberdyn_tests_explicit_bar_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/contact/rigid_plane_contact.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include <cmath>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace bar
+{
+  using namespace dealii;
+
+  /**
+   * Boundary ids of the bar (GridGenerator::subdivided_hyper_rectangle
+   * with colorize = true).
+   */
+  namespace boundary
+  {
+    constexpr types::boundary_id x_min = 0, x_max = 1, y_min = 2, y_max = 3,
+                                 z_min = 4, z_max = 5;
+  } // namespace boundary
+
+  /**
+   * A bar of square cross-section @p width x @p width (mm), @p n_across
+   * elements in each lateral direction, along z from 0 to @p length (mm)
+   * with @p n_along elements: the bar's axis is z.
+   */
+  class Bar
+  {
+  public:
+    Bar(const double       width,
+        const unsigned int n_across,
+        const double       length,
+        const unsigned int n_along,
+        const MPI_Comm     comm)
+      : width(width)
+      , length(length)
+      , comm(comm)
+      , triangulation(comm)
+      , fe(FE_Q<3>(1), 3)
+      , dof_handler(triangulation)
+    {
+      GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                {n_across, n_across, n_along},
+                                                Point<3>(0., 0., 0.),
+                                                Point<3>(width, width, length),
+                                                /*colorize=*/true);
+      // colorize also numbers the cells by octant: one material here.
+      for (const auto &cell : triangulation.active_cell_iterators())
+        cell->set_material_id(0);
+      dof_handler.distribute_dofs(fe);
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(),
+        relevant,
+        comm);
+    }
+
+    /** Cross-section area (mm^2). */
+    double
+    area() const
+    {
+      return width * width;
+    }
+
+    /**
+     * Local indices of the locally owned axial (z) degrees of freedom of
+     * the nodes in the cross-section z = @p z (which must be a node layer).
+     */
+    std::vector<unsigned int>
+    axial_dofs_at(const double z) const
+    {
+      std::set<unsigned int>               dofs;
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (const unsigned int v : cell->vertex_indices())
+              if (std::abs(cell->vertex(v)[2] - z) < 1e-9 * length)
+                {
+                  const types::global_dof_index i =
+                    dof_indices[fe.component_to_system_index(2, v)];
+                  if (partitioner->in_local_range(i))
+                    dofs.insert(partitioner->global_to_local(i));
+                }
+          }
+      return {dofs.begin(), dofs.end()};
+    }
+
+    const double                                 width, length;
+    const MPI_Comm                               comm;
+    parallel::distributed::Triangulation<3>      triangulation;
+    const FESystem<3>                            fe;
+    DoFHandler<3>                                dof_handler;
+    std::shared_ptr<Utilities::MPI::Partitioner> partitioner;
+  };
+
+
+  /** Arrival of a wave front at stations along the bar. */
+  struct FrontArrivals
+  {
+    /** Station positions along the bar (mm). */
+    std::vector<double> z;
+    /** Arrival times (ms); negative if the front did not arrive. */
+    std::vector<double> t;
+    /** Least-squares slope of z over t (mm/ms). */
+    double speed = 0.;
+  };
+
+  /**
+   * Push the end z = 0 of the bar, initially at rest, with a rigid plane
+   * of huge mass (1e6 kg, millions of times the bar's, free along z)
+   * moving at @p v0 (mm/ms): a step in velocity applied through penalty
+   * contact with scale @p penalty_scale. With @p confined, four held
+   * frictionless rigid planes on the lateral faces keep them from moving
+   * outwards (a bar in a closely fitting rigid sleeve: uniaxial strain in
+   * compression).
+   *
+   * The front arrives at a station z when the mean axial velocity of the
+   * nodes of that cross-section first reaches v0 / 2, interpolated
+   * linearly between steps; the velocity the solver holds after a step
+   * belongs to the half step t_n + dt / 2. The run ends at @p end_time
+   * (ms), before the reflection from the free end returns to any station.
+   */
+  inline FrontArrivals
+  step_load_front(const Bar                                    &bar,
+                  const rubberdyn::materials::MaterialModel<3> &material,
+                  const double                                  v0,
+                  const double                                  penalty_scale,
+                  const bool                                    confined,
+                  const std::vector<double>                    &stations,
+                  const double                                  end_time)
+  {
+    namespace ti = rubberdyn::time_integration;
+    rubberdyn::elements::SolidHexElements elements;
+    elements.initialize(bar.dof_handler,
+                        bar.partitioner,
+                        {{0, &material}},
+                        rubberdyn::elements::ElementSettings());
+
+    const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
+    std::set<types::boundary_id>                ids    = {boundary::z_min};
+    std::vector<rubberdyn::contact::RigidPlane> planes = {
+      {Point<3>(0., 0., 0.), ez}};
+    if (confined)
+      {
+        ids.insert(
+          {boundary::x_min, boundary::x_max, boundary::y_min, boundary::y_max});
+        const double a = bar.width;
+        planes.push_back({Point<3>(0., 0., 0.), ex});
+        planes.push_back({Point<3>(a, 0., 0.), -ex});
+        planes.push_back({Point<3>(0., 0., 0.), ey});
+        planes.push_back({Point<3>(0., a, 0.), -ey});
+      }
+    rubberdyn::contact::RigidPlaneContact contact;
+    contact.initialize(bar.dof_handler,
+                       bar.partitioner,
+                       ids,
+                       {material.bulk_modulus()},
+                       penalty_scale,
+                       planes);
+
+    std::vector<ti::RigidBody> bodies(planes.size()); // held unless freed
+    bodies[0].mass        = 1e6;
+    bodies[0].free[2]     = true;
+    bodies[0].velocity[2] = v0;
+
+    ti::ExplicitSolver solver(bar.dof_handler,
+                              elements,
+                              contact,
+                              bodies,
+                              bar.partitioner,
+                              std::vector<double>(elements.n_elements(), 1.),
+                              ti::ExplicitSettings(),
+                              bar.comm);
+
+    FrontArrivals                          result;
+    std::vector<std::vector<unsigned int>> dofs;
+    std::vector<unsigned int>              n_nodes;
+    for (const double z : stations)
+      {
+        dofs.push_back(bar.axial_dofs_at(z));
+        n_nodes.push_back(
+          Utilities::MPI::sum<unsigned int>(dofs.back().size(), bar.comm));
+        result.z.push_back(z);
+        result.t.push_back(-1.);
+      }
+    std::vector<double> previous_v(stations.size(), 0.);
+    double              previous_t = 0.;
+    solver.run(end_time, [&]() {
+      const double        t = solver.time() + 0.5 * solver.time_step();
+      std::vector<double> sums(stations.size(), 0.);
+      for (unsigned int s = 0; s < stations.size(); ++s)
+        for (const unsigned int i : dofs[s])
+          sums[s] += solver.velocity().local_element(i);
+      Utilities::MPI::sum(ArrayView<const double>(sums),
+                          bar.comm,
+                          ArrayView<double>(sums));
+      for (unsigned int s = 0; s < stations.size(); ++s)
+        {
+          const double v = sums[s] / n_nodes[s];
+          if (result.t[s] < 0. && v >= 0.5 * v0)
+            result.t[s] = previous_t + (t - previous_t) *
+                                         (0.5 * v0 - previous_v[s]) /
+                                         (v - previous_v[s]);
+          previous_v[s] = v;
+        }
+      previous_t = t;
+    });
+
+    // Least-squares fit z = z_0 + speed t.
+    const unsigned int n      = stations.size();
+    double             mean_t = 0., mean_z = 0.;
+    for (unsigned int s = 0; s < n; ++s)
+      {
+        mean_t += result.t[s] / n;
+        mean_z += result.z[s] / n;
+      }
+    double stt = 0., stz = 0.;
+    for (unsigned int s = 0; s < n; ++s)
+      {
+        stt += (result.t[s] - mean_t) * (result.t[s] - mean_t);
+        stz += (result.t[s] - mean_t) * (result.z[s] - mean_z);
+      }
+    result.speed = stz / stt;
+    return result;
+  }
+} // namespace bar
+
+#endif
