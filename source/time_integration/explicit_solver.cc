@@ -4,7 +4,10 @@
 
 #include <rubberdyn/time_integration/explicit_solver.h>
 
+#include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace rubberdyn
 {
@@ -96,10 +99,47 @@ namespace rubberdyn
 
 
     void
+    ExplicitSolver::set_constraints(const KinematicConstraints &constraints_in)
+    {
+      constraints = &constraints_in;
+      reaction.assign(constraints->n_groups(), 0.);
+      for (const KinematicConstraints::Entry &entry : constraints->entries())
+        v.local_element(entry.dof) =
+          constraints->velocity(entry.group, current_time);
+      v.update_ghost_values();
+    }
+
+
+
+    namespace
+    {
+      // Seconds since @p start, and restart the clock.
+      double
+      lap(std::chrono::steady_clock::time_point &start)
+      {
+        const auto   now     = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - start).count();
+        start                = now;
+        return seconds;
+      }
+
+      std::string
+      number(const double value)
+      {
+        std::ostringstream text;
+        text << std::setprecision(6) << value;
+        return text.str();
+      }
+    } // namespace
+
+
+
+    void
     ExplicitSolver::run(const double end_time, const std::function<void()> &monitor)
     {
       const unsigned int n_owned  = partitioner->locally_owned_size();
       const unsigned int n_bodies = bodies.size();
+      const unsigned int n_groups = constraints ? constraints->n_groups() : 0;
       if (!started)
         {
           // Initial energy: kinetic energy of the initial velocities.
@@ -113,28 +153,41 @@ namespace rubberdyn
         }
 
       std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
-      std::vector<double>       sums(5 + 3 * n_bodies);
-      double                    gravity_work_increment = 0.;
+      // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
+      // and constraint work, then the body forces and the reactions.
+      constexpr unsigned int n_energy_sums = 6;
+      std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
+      std::vector<double> local_reaction(n_groups);
+      double              gravity_work_increment = 0.;
+      auto                clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
           // Forces at u^n: -f_int + f_contact + f_gravity.
           f = 0.;
           elements::ElementStepResult element_result;
           elements.compute_forces(u, v, density_scaling, f, element_result);
+          timing.element_forces += lap(clock);
           f.compress(VectorOperation::add);
+          timing.communication += lap(clock);
           f *= -1.;
           f += gravity_force;
           for (unsigned int b = 0; b < n_bodies; ++b)
             plane_displacement[b] = bodies[b].displacement;
           contact::ContactResult contact_result;
           contact.add_forces(u, plane_displacement, f, contact_result);
+          const double contact_step = contact.stable_time_step(mass);
+          timing.contact += lap(clock);
 
           // Collective 1: the stable step (negative: an element failed).
-          double local_step = std::min(element_result.min_time_step,
-                                       contact.stable_time_step(mass));
+          // Elements and penalty springs act in parallel on contact nodes.
+          double local_step =
+            1. / std::sqrt(1. / (element_result.min_time_step *
+                                 element_result.min_time_step) +
+                           1. / (contact_step * contact_step));
           if (element_result.failure.failed)
             local_step = -1.;
           const double stable_step = Utilities::MPI::min(local_step, comm);
+          timing.communication += lap(clock);
           if (stable_step < 0.)
             {
               std::ostringstream message;
@@ -148,18 +201,16 @@ namespace rubberdyn
               for (const std::string &m : messages)
                 if (!m.empty() && text.empty())
                   text = m;
-              throw SolverFailure(text + ", at time " +
-                                  std::to_string(current_time) + " ms, step " +
-                                  std::to_string(step_number));
+              throw SolverFailure(text + ", at time " + number(current_time) +
+                                  " ms, step " + std::to_string(step_number));
             }
           const double new_step = settings.time_step_scale * stable_step;
           if (new_step < settings.minimum_time_step)
-            throw SolverFailure(
-              "the stable time step " + std::to_string(new_step) +
-              " ms fell below the minimum time step " +
-              std::to_string(settings.minimum_time_step) + " ms at time " +
-              std::to_string(current_time) + " ms, step " +
-              std::to_string(step_number));
+            throw SolverFailure("the stable time step " + number(new_step) +
+                                " ms fell below the minimum time step " +
+                                number(settings.minimum_time_step) +
+                                " ms at time " + number(current_time) +
+                                " ms, step " + std::to_string(step_number));
           const double average_step =
             started ? 0.5 * (last_time_step + new_step) : 0.5 * new_step;
 
@@ -176,30 +227,67 @@ namespace rubberdyn
                          (v_old + v_new);
               v.local_element(i) = v_new;
             }
+          // Prescribed velocities at t_{n+1/2}, their reactions and work
+          // (the kinetic energy of the free update is corrected).
+          double constraint_work = 0.;
+          std::fill(local_reaction.begin(), local_reaction.end(), 0.);
+          if (constraints != nullptr)
+            {
+              const double half_step_time = current_time + 0.5 * new_step;
+              for (const KinematicConstraints::Entry &entry :
+                   constraints->entries())
+                {
+                  const unsigned int i = entry.dof;
+                  const double       m = mass.local_element(i);
+                  const double v_free  = v.local_element(i);
+                  const double v_old =
+                    v_free - average_step * inverse_mass.local_element(i) *
+                               f.local_element(i);
+                  const double v_new =
+                    constraints->velocity(entry.group, half_step_time);
+                  const double r =
+                    m * (v_new - v_old) / average_step - f.local_element(i);
+                  local_reaction[entry.group] += r;
+                  constraint_work += r * 0.5 * (v_old + v_new) * average_step;
+                  kinetic += 0.125 * m *
+                             ((v_old + v_new) * (v_old + v_new) -
+                              (v_old + v_free) * (v_old + v_free));
+                  v.local_element(i) = v_new;
+                }
+            }
+          timing.vector_updates += lap(clock);
 
-          // Collective 2: energies and the contact forces on the bodies.
+          // Collective 2: energies, contact forces on the bodies,
+          // reactions.
           sums[0] = kinetic;
           sums[1] = element_result.internal_energy;
           sums[2] = contact_result.penalty_energy;
           sums[3] = element_result.bulk_viscosity_power;
           sums[4] = gravity_work_increment;
+          sums[5] = constraint_work;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
-              sums[5 + 3 * b + d] = contact_result.force_on_plane[b][d];
+              sums[n_energy_sums + 3 * b + d] =
+                contact_result.force_on_plane[b][d];
+          for (unsigned int g = 0; g < n_groups; ++g)
+            sums[n_energy_sums + 3 * n_bodies + g] = local_reaction[g];
           Utilities::MPI::sum(ArrayView<const double>(sums),
                               comm,
                               ArrayView<double>(sums));
+          timing.communication += lap(clock);
 
           energy.kinetic  = sums[0];
           energy.internal = sums[1];
           energy.contact  = sums[2];
           energy.bulk_viscosity_work += sums[3] * average_step;
-          energy.external_work += sums[4];
+          energy.external_work += sums[4] + sums[5];
+          for (unsigned int g = 0; g < n_groups; ++g)
+            reaction[g] = sums[n_energy_sums + 3 * n_bodies + g];
           for (unsigned int b = 0; b < n_bodies; ++b)
             {
               RigidBody &body = bodies[b];
               for (unsigned int d = 0; d < 3; ++d)
-                body.contact_force[d] = sums[5 + 3 * b + d];
+                body.contact_force[d] = sums[n_energy_sums + 3 * b + d];
               if (body.mass > 0.)
                 {
                   Tensor<1, 3> v_new = body.velocity;
@@ -216,7 +304,9 @@ namespace rubberdyn
 
           // Output sees the state at t_n and the step about to be taken.
           last_time_step = new_step;
+          lap(clock);
           monitor();
+          timing.output += lap(clock);
 
           // Displacements to t_{n+1}.
           for (RigidBody &body : bodies)
@@ -232,9 +322,11 @@ namespace rubberdyn
               u.local_element(i) += increment;
               gravity_work_increment += gravity_force.local_element(i) * increment;
             }
+          elements.accept_history();
+          timing.vector_updates += lap(clock);
           u.update_ghost_values();
           v.update_ghost_values();
-          elements.accept_history();
+          timing.communication += lap(clock);
 
           current_time += new_step;
           ++step_number;

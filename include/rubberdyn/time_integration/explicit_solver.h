@@ -7,6 +7,7 @@
 
 #include <rubberdyn/contact/rigid_plane_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <functional>
 #include <memory>
@@ -62,6 +63,24 @@ namespace rubberdyn
       relative_error() const;
     };
 
+    /**
+     * Wall time (s) spent in each part of the time steps of a run, on this
+     * rank, for the benchmark breakdown.
+     */
+    struct StepTimings
+    {
+      /** Internal forces, energies and stable steps of the elements. */
+      double element_forces = 0.;
+      /** Contact forces and their stable step. */
+      double contact = 0.;
+      /** Velocity and displacement updates, constraints, rigid bodies. */
+      double vector_updates = 0.;
+      /** Ghost exchange, force compression and the two collectives. */
+      double communication = 0.;
+      /** The monitor: history rows, field output, progress line. */
+      double output = 0.;
+    };
+
     /** Settings of the central-difference integrator. */
     struct ExplicitSettings
     {
@@ -92,9 +111,19 @@ namespace rubberdyn
      * half step starts from the initial velocity ($\Delta t^0 =
      * \Delta t^{1/2}/2$). The step is re-evaluated every step from the
      * elements (current wave speed and size, bulk viscosity) and the penalty
-     * springs, times the scale factor. Per step there are exactly two MPI
+     * springs, times the scale factor. A contact node is held by its
+     * elements and its penalty spring in parallel, so the step is limited
+     * by $1/\Delta t^2 = 1/\Delta t_e^2 + 1/\Delta t_c^2$ with the
+     * smallest element and contact steps (conservative: the two minima need
+     * not be at the same node). Per step there are exactly two MPI
      * collectives: the minimum (stable step and failure flag) and one sum
-     * (contact forces on rigid bodies and energy terms).
+     * (contact forces on rigid bodies, reactions of kinematic constraints
+     * and energy terms).
+     *
+     * Kinematic constraints overwrite the half-step velocities of their
+     * dofs; their reaction $r = M(v^{n+1/2} - v^{n-1/2})/\Delta t^n - f^n$
+     * is what the constraint applies to the solid, and its work
+     * $r \cdot \tfrac12(v^{n-1/2} + v^{n+1/2})\Delta t^n$ is external work.
      */
     class ExplicitSolver
     {
@@ -115,6 +144,14 @@ namespace rubberdyn
       /** Set a uniform initial velocity of the solid (mm/ms). */
       void
       set_initial_velocity(const Tensor<1, 3> &velocity);
+
+      /**
+       * Prescribe velocities on boundaries (must stay alive during run()).
+       * The initial velocity of constrained dofs is overwritten by the
+       * prescribed one at t = 0.
+       */
+      void
+      set_constraints(const KinematicConstraints &constraints);
 
       /**
        * Advance until @p end_time. After every step @p monitor is called
@@ -144,6 +181,13 @@ namespace rubberdyn
       double added_mass() const { return total_added_mass; }
       /** Physical mass of the solid (kg). */
       double physical_mass() const { return total_physical_mass; }
+      /**
+       * Reaction force (kN) of each group of the kinematic constraints on
+       * the solid at the current time, summed over all ranks.
+       */
+      const std::vector<double> &reactions() const { return reaction; }
+      /** Time spent in each part of the steps so far (s, this rank). */
+      const StepTimings &timings() const { return timing; }
 
     private:
       elements::SolidHexElements &                       elements;
@@ -162,6 +206,9 @@ namespace rubberdyn
       EnergyBalance energy;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
+      const KinematicConstraints *constraints = nullptr;
+      std::vector<double>         reaction;
+      StepTimings                 timing;
     };
   } // namespace time_integration
 } // namespace rubberdyn
