@@ -8,7 +8,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
-#include <rubberdyn/contact/rigid_plane_contact.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/geometry/standing_cylinder.h>
 #include <rubberdyn/materials/material_registry.h>
@@ -63,9 +63,8 @@ namespace rubberdyn
                         "Height of the rubber cylinder (mm).");
       prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
                         "Coulomb friction coefficient between the rubber and "
-                        "both plates (-). Only 0 (frictionless, as in the "
-                        "reference study) is implemented so far; other values "
-                        "are rejected.");
+                        "both plates (-); 0 (the reference study's choice) "
+                        "keeps the compression homogeneous.");
       prm.declare_entry("Global refinement", "2", Patterns::Integer(0, 6),
                         "Number of global refinements of the coarse cylinder "
                         "mesh (5 cells per cross-section, 2 along the axis): "
@@ -149,10 +148,6 @@ namespace rubberdyn
       require_positive(p.impactor_mass, "Drop test/Impactor mass");
       require_positive(p.diameter, "Drop test/Cylinder diameter");
       require_positive(p.height, "Drop test/Cylinder height");
-      if (p.friction != 0.)
-        throw InputError("Drop test/Friction coefficient",
-                         "friction is not implemented yet; only 0 "
-                         "(frictionless plates) is accepted");
 
       prm.enter_subsection("Time integration");
       p.end_time               = prm.get_double("End time");
@@ -240,15 +235,15 @@ namespace rubberdyn
             }
         }
 
-      contact::RigidPlaneContact plates;
+      contact::RigidSurfaceContact plates;
       const Tensor<1, 3>         up({0., 0., 1.});
       plates.initialize(dof_handler, partitioner,
                         {geometry::cylinder_boundary::hull,
                          geometry::cylinder_boundary::bottom,
                          geometry::cylinder_boundary::top},
                         {p.rubber->bulk_modulus()}, p.penalty_scale,
-                        {{Point<3>(0., 0., 0.), up},
-                         {Point<3>(0., 0., p.height), -up}});
+                        {{Point<3>(0., 0., 0.), up, p.friction},
+                         {Point<3>(0., 0., p.height), -up, p.friction}});
 
       std::vector<time_integration::RigidBody> bodies(2);
       bodies[1].mass        = p.impactor_mass;

@@ -17,11 +17,21 @@ namespace rubberdyn
     EnergyBalance::relative_error() const
     {
       const double present =
-        kinetic + internal + contact + bulk_viscosity_work;
+        kinetic + internal + contact + bulk_viscosity_work + friction_work;
       const double supplied = initial + external_work;
-      const double scale    = std::max(std::abs(present),
-                                    std::abs(initial) + std::abs(external_work));
+      const double scale    = std::max(largest_energy, current_scale());
       return scale > 0. ? std::abs(present - supplied) / scale : 0.;
+    }
+
+
+
+    double
+    EnergyBalance::current_scale() const
+    {
+      return std::max(std::abs(kinetic) + std::abs(internal) +
+                        std::abs(contact) + std::abs(bulk_viscosity_work) +
+                        std::abs(friction_work),
+                      std::abs(initial) + std::abs(external_work));
     }
 
 
@@ -29,7 +39,7 @@ namespace rubberdyn
     ExplicitSolver::ExplicitSolver(
       const DoFHandler<3, 3> &                                   dof_handler,
       elements::SolidHexElements &                               elements,
-      contact::RigidPlaneContact &                               contact,
+      contact::RigidSurfaceContact &                               contact,
       std::vector<RigidBody> &                                   bodies,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
       const std::vector<double> &                                density_scaling,
@@ -153,9 +163,10 @@ namespace rubberdyn
         }
 
       std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
-      // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
-      // and constraint work, then the body forces and the reactions.
-      constexpr unsigned int n_energy_sums = 6;
+      // Collective 2: kinetic, internal, contact, bulk viscosity, gravity,
+      // constraint and friction work, then the body forces and the
+      // reactions.
+      constexpr unsigned int n_energy_sums = 7;
       std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
       std::vector<double> local_reaction(n_groups);
       double              gravity_work_increment = 0.;
@@ -265,6 +276,7 @@ namespace rubberdyn
           sums[3] = element_result.bulk_viscosity_power;
           sums[4] = gravity_work_increment;
           sums[5] = constraint_work;
+          sums[6] = contact_result.friction_dissipation;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
               sums[n_energy_sums + 3 * b + d] =
@@ -281,6 +293,7 @@ namespace rubberdyn
           energy.contact  = sums[2];
           energy.bulk_viscosity_work += sums[3] * average_step;
           energy.external_work += sums[4] + sums[5];
+          energy.friction_work += sums[6];
           for (unsigned int g = 0; g < n_groups; ++g)
             reaction[g] = sums[n_energy_sums + 3 * n_bodies + g];
           for (unsigned int b = 0; b < n_bodies; ++b)
@@ -301,6 +314,9 @@ namespace rubberdyn
                   body.velocity = v_new;
                 }
             }
+
+          energy.largest_energy =
+            std::max(energy.largest_energy, energy.current_scale());
 
           // Output sees the state at t_n and the step about to be taken.
           last_time_step = new_step;

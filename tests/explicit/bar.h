@@ -15,7 +15,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <rubberdyn/base/vector.h>
-#include <rubberdyn/contact/rigid_plane_contact.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -161,7 +161,7 @@ namespace bar
 
     const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
     std::set<types::boundary_id>                ids    = {boundary::z_min};
-    std::vector<rubberdyn::contact::RigidPlane> planes = {
+    std::vector<rubberdyn::contact::RigidSurface> planes = {
       {Point<3>(0., 0., 0.), ez}};
     if (confined)
       {
@@ -173,7 +173,7 @@ namespace bar
         planes.push_back({Point<3>(0., 0., 0.), ey});
         planes.push_back({Point<3>(0., a, 0.), -ey});
       }
-    rubberdyn::contact::RigidPlaneContact contact;
+    rubberdyn::contact::RigidSurfaceContact contact;
     contact.initialize(bar.dof_handler,
                        bar.partitioner,
                        ids,

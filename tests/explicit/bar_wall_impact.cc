@@ -50,7 +50,7 @@
 // acts while the volume changes, i.e. in the fronts, not on the plateau.
 #include <deal.II/base/mpi.h>
 
-#include <rubberdyn/contact/rigid_plane_contact.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -87,7 +87,7 @@ main(int argc, char **argv)
 
   // The wall z = 0, facing the bar's end face, which touches it at t = 0.
   const double                          penalty_scale = 1.;
-  rubberdyn::contact::RigidPlaneContact wall;
+  rubberdyn::contact::RigidSurfaceContact wall;
   wall.initialize(model.dof_handler,
                   model.partitioner,
                   {bar::boundary::z_min},

@@ -5,7 +5,7 @@
 #include <deal.II/base/tensor.h>
 #include <rubberdyn/base/vector.h>
 
-#include <rubberdyn/contact/rigid_plane_contact.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
@@ -54,13 +54,27 @@ namespace rubberdyn
       double external_work        = 0.;
       double contact              = 0.;
       double bulk_viscosity_work  = 0.;
+      /** Energy dissipated by Coulomb friction. */
+      double friction_work        = 0.;
       double initial              = 0.;
+      /** Largest current_scale() of the run so far. */
+      double largest_energy = 0.;
       /**
-       * |E_kin + E_int + E_contact + W_bulk viscosity - E_0 - W_ext| /
-       * max(E_kin + E_int + E_contact + W_bv, E_0 + |W_ext|).
+       * |E_kin + E_int + E_contact + W_bulk viscosity + W_friction - E_0 -
+       * W_ext| divided by the largest energy of the run so far
+       * (largest_energy, or current_scale() if larger). Dividing by the
+       * current energies instead would make a body that starts at rest
+       * report 100 % in its first steps, where all terms are O(dt^2).
        */
       double
       relative_error() const;
+
+      /**
+       * The size of the energies now: max(sum of the magnitudes of the
+       * present terms, |E_0| + |W_ext|).
+       */
+      double
+      current_scale() const;
     };
 
     /**
@@ -133,7 +147,7 @@ namespace rubberdyn
        */
       ExplicitSolver(const DoFHandler<3, 3> &                  dof_handler,
                      elements::SolidHexElements &              elements,
-                     contact::RigidPlaneContact &              contact,
+                     contact::RigidSurfaceContact &              contact,
                      std::vector<RigidBody> &                  bodies,
                      const std::shared_ptr<const Utilities::MPI::Partitioner>
                        &                                       partitioner,
@@ -191,7 +205,7 @@ namespace rubberdyn
 
     private:
       elements::SolidHexElements &                       elements;
-      contact::RigidPlaneContact &                       contact;
+      contact::RigidSurfaceContact &                       contact;
       std::vector<RigidBody> &                           bodies;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       std::vector<double>                                density_scaling;

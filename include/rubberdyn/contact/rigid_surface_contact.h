@@ -1,0 +1,184 @@
+#ifndef rubberdyn_contact_rigid_surface_contact_h
+#define rubberdyn_contact_rigid_surface_contact_h
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <rubberdyn/base/vector.h>
+
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class DoFHandler;
+}
+
+namespace rubberdyn
+{
+  /**
+   * Contact between deformable surfaces and rigid or deformable partners.
+   */
+  namespace contact
+  {
+    using namespace dealii;
+
+    /**
+     * A rigid surface that moves with a rigid body (translation only):
+     * a plane, or a circular cylinder (a rigid pin with the solid outside, or
+     * a rigid tube/hole with the solid inside), with a Coulomb friction
+     * coefficient towards the solid.
+     */
+    struct RigidSurface
+    {
+      enum class Shape
+      {
+        /** Points with normal . (x - point) >= 0 are outside the body. */
+        plane,
+        /** Points farther than radius from the axis are outside the body. */
+        cylinder_solid_outside,
+        /** Points closer than radius to the axis are outside the body. */
+        cylinder_solid_inside
+      };
+      /**
+       * Plane: a point of it; cylinder: a point of its axis (mm, reference
+       * configuration).
+       */
+      Point<3> point;
+      /**
+       * Plane: unit normal pointing away from the rigid body, into the
+       * solid; cylinder: unit axis direction.
+       */
+      Tensor<1, 3> normal;
+      /** Coulomb friction coefficient (-), 0: frictionless. */
+      double friction_coefficient = 0.;
+      /** Cylinder radius (mm); unused for a plane. */
+      double radius = 0.;
+      Shape  shape = Shape::plane;
+    };
+
+    /** What contact did in one evaluation. */
+    struct ContactResult
+    {
+      /**
+       * Force of the solid on each surface (kN), i.e. minus the sum of the
+       * contact forces applied to the solid's nodes.
+       */
+      std::vector<Tensor<1, 3>> force_on_plane;
+      /**
+       * Energy stored in the normal and tangential penalty springs (J = kN
+       * mm).
+       */
+      double penalty_energy = 0.;
+      /** Energy dissipated by Coulomb slip in this evaluation (J). */
+      double friction_dissipation = 0.;
+    };
+
+    /**
+     * Node-to-surface penalty contact of the boundary nodes of a solid with
+     * rigid surfaces, frictionless or with Coulomb friction (the plates of
+     * the drop test, walls, pins, holes).
+     *
+     * Normal: a boundary node that has crossed a surface by the gap $g < 0$
+     * feels the force $-k g\,n$. Its stiffness collects, from every contact
+     * face of the node, a quarter of the face stiffness $k = s K A^2 / V$
+     * (LS-DYNA's choice for solids: $s$ the penalty scale factor, $K$ the
+     * bulk modulus of the face's element, $A$ the face area, $V$ the element
+     * volume).
+     *
+     * Friction: an elastic-plastic tangential spring of the same stiffness
+     * (regularised Coulomb law, e.g. Wriggers, Computational Contact
+     * Mechanics, 2006, sect. 5.2). Each evaluation moves the tangential force
+     * by $-k\,\Delta u_t$, the increment of the node's displacement
+     * relative to the surface projected on the tangent plane; if it exceeds
+     * $\mu |f_n|$ it is scaled back to the Coulomb cone (slip), and the
+     * energy dissipated, $\mu |f_n| \cdot$ (slip increment), is reported.
+     * The spring's stored energy $|f_t|^2/2k$ is part of penalty_energy. A
+     * node that separates forgets its tangential force.
+     *
+     * The critical time step of a node of mass $m$ on its penalty spring is
+     * $2\sqrt{m/k}$; the explicit solver combines it with the elements'.
+     */
+    class RigidSurfaceContact
+    {
+    public:
+      /**
+       * Find the boundary nodes (on faces with one of @p boundary_ids) and
+       * their penalty stiffness.
+       *
+       * @param bulk_modulus_by_material K (GPa) for each material id.
+       */
+      void
+      initialize(const DoFHandler<3, 3> &dof_handler,
+                 const std::shared_ptr<const Utilities::MPI::Partitioner>
+                   &                                  partitioner,
+                 const std::set<types::boundary_id> & boundary_ids,
+                 const std::vector<double> &          bulk_modulus_by_material,
+                 const double                         penalty_scale,
+                 const std::vector<RigidSurface> &    surfaces);
+
+      /**
+       * Add the contact forces at displacement @p u (owned entries) with
+       * the surfaces displaced by @p surface_displacement into @p f (owned
+       * entries only), and advance the friction state to this
+       * configuration: call once per time step.
+       */
+      void
+      add_forces(const VectorType &               u,
+                 const std::vector<Tensor<1, 3>> &surface_displacement,
+                 VectorType &                     f,
+                 ContactResult &                  result);
+
+      /**
+       * Smallest stable time step of the penalty springs, 2 sqrt(m/k), for
+       * the lumped masses @p mass.
+       */
+      double
+      stable_time_step(const VectorType &mass) const;
+
+      /** Number of locally owned contact nodes. */
+      unsigned int
+      n_nodes() const;
+
+      /**
+       * The friction state (per node and surface: tangential force and the
+       * node's last position relative to the surface), for checkpoints.
+       */
+      std::vector<double> &
+      state();
+
+    private:
+      struct Node
+      {
+        /** Local indices of the x, y, z degrees of freedom. */
+        unsigned int dofs[3];
+        /** Reference position (mm). */
+        Point<3> X;
+        /** Penalty stiffness (kN/mm). */
+        double stiffness;
+      };
+
+      /** Gap (mm, negative: penetration) and unit normal into the solid. */
+      static void
+      gap_and_normal(const RigidSurface &surface,
+                     const Point<3> &    x,
+                     double &            gap,
+                     Tensor<1, 3> &      normal);
+
+      std::vector<Node>         nodes;
+      std::vector<RigidSurface> surfaces;
+      /**
+       * Per node n and surface s, at [(n * n_surfaces + s) * 6]: the
+       * tangential force (kN, 3) and the node's position relative to the
+       * surface's translation at the last evaluation (mm, 3).
+       */
+      std::vector<double> friction_state;
+    };
+  } // namespace contact
+} // namespace rubberdyn
+
+#endif

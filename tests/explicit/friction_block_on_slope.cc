@@ -1,0 +1,189 @@
+// Coulomb friction of the rigid-surface contact, slip and stick, with
+// rigid-body mechanics (e.g. Meriam & Kraige, Engineering Mechanics:
+// Dynamics, sect. 3/4) as the reference:
+// 1. Slip: an elastic block on a fixed rigid plane under gravity tilted by
+//    theta = 30 degrees from the plane's normal (a block on a 30-degree
+//    slope), mu = 0.3 < tan(theta): it slides with a = g (sin(theta) - mu
+//    cos(theta)) = 0.2402 g; checked within 2 % from the mean velocity of
+//    the nodes between t = 1 and 3 ms. The energy balance with the friction
+//    work holds to 1 %.
+// 2. Slip, then stick: the block at rest on a conveyor (a rigid plane of
+//    huge mass moving tangentially at V = 0.5 mm/ms), gravity normal to it,
+//    mu = 0.3: friction accelerates it at mu g until it moves with the
+//    belt at t* = V / (mu g) = 1.67 ms, after which it sticks. Checked: the
+//    velocity at t = 1 ms is mu g t within 2 %, and from 2.5 to 3 ms the
+//    block moves with the belt (velocity V within 0.5 %).
+// The block starts touching the plane without load, so it bounces on the
+// normal penalty springs (nothing damps them): the normal force
+// oscillates around m g, which is why the checks use mean velocities over
+// many bounce periods.
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/materials/elastic.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include "../tests.h"
+
+using namespace dealii;
+using namespace rubberdyn;
+using testing::check;
+using testing::out;
+using testing::sci;
+
+namespace
+{
+  struct SlopeResult
+  {
+    double acceleration;
+    double displacement;
+    double max_energy_error;
+    double friction_work;
+  };
+
+  struct Run
+  {
+    double velocity_1, time_1, velocity_2, time_2;
+    double displacement;
+    double energy_error;
+    double friction_work;
+  };
+
+  // An elastic 4 x 4 x 2 mm block of 1 mm cubes on the rigid plane z = 0
+  // with friction coefficient mu, the plane moving at plane_velocity in x,
+  // under the gravity vector @p gravity; mean x velocities of the nodes at
+  // about time_1 and time_2 (ms).
+  Run
+  run_block(const double        mu,
+            const Tensor<1, 3> &gravity,
+            const double        plane_velocity,
+            const double        time_1,
+            const double        time_2,
+            const MPI_Comm      comm)
+  {
+    parallel::distributed::Triangulation<3> tria(comm);
+    // colorize: boundary id 4 is z = 0.
+    GridGenerator::subdivided_hyper_rectangle(tria, {4, 4, 2},
+                                              Point<3>(0., 0., 0.),
+                                              Point<3>(4., 4., 2.), true);
+    // colorize also numbers the cells' material ids; one material here.
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(0);
+    const FESystem<3> fe(FE_Q<3>(1), 3);
+    DoFHandler<3>     dof_handler(tria);
+    dof_handler.distribute_dofs(fe);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(), relevant, comm);
+
+    const materials::Elastic<3> block(0.05, 0.3, 1e-6);
+    elements::SolidHexElements  hexes;
+    hexes.initialize(dof_handler, partitioner, {{0, &block}},
+                     elements::ElementSettings());
+    contact::RigidSurfaceContact floor;
+    floor.initialize(dof_handler, partitioner, {4}, {block.bulk_modulus()},
+                     1., {{Point<3>(), Tensor<1, 3>({0., 0., 1.}), mu}});
+    // The plane's body: held, or a belt of huge mass moving along x.
+    std::vector<time_integration::RigidBody> bodies(1);
+    if (plane_velocity != 0.)
+      {
+        bodies[0].mass        = 1e6;
+        bodies[0].free[0]     = true;
+        bodies[0].velocity[0] = plane_velocity;
+      }
+
+    time_integration::ExplicitSettings settings;
+    settings.gravity = gravity;
+    time_integration::ExplicitSolver solver(
+      dof_handler, hexes, floor, bodies, partitioner,
+      std::vector<double>(hexes.n_elements(), 1.), settings, comm);
+
+    std::vector<unsigned int>            x_dofs;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::set<unsigned int>               seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (fe.system_to_component_index(i).first == 0 &&
+                partitioner->in_local_range(dofs[i]) &&
+                seen.insert(partitioner->global_to_local(dofs[i])).second)
+              x_dofs.push_back(partitioner->global_to_local(dofs[i]));
+        }
+    const auto mean = [&](const VectorType &vector) {
+      double sums[2] = {0., double(x_dofs.size())};
+      for (const unsigned int i : x_dofs)
+        sums[0] += vector.local_element(i);
+      Utilities::MPI::sum(ArrayView<const double>(sums, 2), comm,
+                          ArrayView<double>(sums, 2));
+      return sums[0] / sums[1];
+    };
+
+    Run result;
+    // The velocity of the last half step belongs to t + dt/2.
+    solver.run(time_1, []() {});
+    result.velocity_1 = mean(solver.velocity());
+    result.time_1     = solver.time() - 0.5 * solver.time_step();
+    solver.run(time_2, []() {});
+    result.velocity_2    = mean(solver.velocity());
+    result.time_2        = solver.time() - 0.5 * solver.time_step();
+    result.displacement  = mean(solver.displacement());
+    result.energy_error  = solver.energies().relative_error();
+    result.friction_work = solver.energies().friction_work;
+    return result;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm comm  = MPI_COMM_WORLD;
+  const double   g     = 1.; // mm/ms^2, about 100 g, to keep the runs short
+  const double   mu    = 0.3;
+  const double   theta = numbers::PI / 6.;
+
+  const Run slope =
+    run_block(mu, Tensor<1, 3>({g * std::sin(theta), 0., -g * std::cos(theta)}),
+              0., 1., 3., comm);
+  const double slope_acceleration =
+    (slope.velocity_2 - slope.velocity_1) / (slope.time_2 - slope.time_1);
+  const double expected = g * (std::sin(theta) - mu * std::cos(theta));
+  const double slope_error = std::abs(slope_acceleration / expected - 1.);
+  out() << std::setprecision(4) << "slope: acceleration " << slope_acceleration
+        << " mm/ms^2, g (sin - mu cos) = " << expected
+        << ", within 2 %: " << (slope_error < 0.02 ? "yes" : "no")
+        << "; energy error below 1 %: "
+        << (slope.energy_error < 0.01 ? "yes" : "no") << std::endl;
+
+  const double V    = 0.5;
+  const Run    belt = run_block(mu, Tensor<1, 3>({0., 0., -g}), V, 1., 3., comm);
+  const double slip_error  = std::abs(belt.velocity_1 / (mu * g * belt.time_1) - 1.);
+  const double stick_error = std::abs(belt.velocity_2 / V - 1.);
+  out() << "belt: velocity at " << belt.time_1 << " ms " << belt.velocity_1
+        << " mm/ms, mu g t = " << mu * g * belt.time_1
+        << ", within 2 %: " << (slip_error < 0.02 ? "yes" : "no")
+        << "; at " << belt.time_2 << " ms " << belt.velocity_2
+        << " mm/ms, belt " << V
+        << ", within 0.5 %: " << (stick_error < 0.005 ? "yes" : "no")
+        << std::endl;
+  std::cerr << "errors: slope acceleration " << sci(slope_error)
+            << ", slope energy " << sci(slope.energy_error) << ", slip "
+            << sci(slip_error) << ", stick " << sci(stick_error)
+            << "; friction work on the slope " << slope.friction_work << " J"
+            << std::endl;
+
+  check(slope_error < 0.02, "sliding acceleration within 2 %");
+  check(slope.energy_error < 0.01, "energy balance with friction");
+  check(slip_error < 0.02, "belt: slip acceleration within 2 %");
+  check(stick_error < 0.005, "belt: sticks at the belt's velocity");
+}
