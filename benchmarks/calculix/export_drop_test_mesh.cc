@@ -150,7 +150,7 @@ main(int argc, char **argv)
             << vertices[vertex][1] << ", " << vertices[vertex][2] << '\n';
 
       out << "*ELEMENT, TYPE=" << type << ", ELSET=RUBBER\n";
-      // Faces on the plates: boundary id -> (element, Abaqus face label).
+      // Boundary faces: boundary id -> (element, Abaqus face label).
       std::map<unsigned int, std::vector<std::pair<unsigned int, unsigned int>>>
                                                      faces_on;
       std::map<unsigned int, std::set<unsigned int>> nodes_on;

@@ -13,7 +13,8 @@
 #               /tmp/calculix_drop_test_rREFINEMENT)
 #
 # Environment: END_TIME (ms, default 30) shortens both runs; ELEMENT (C3D8,
-# the default, C3D8R or C3D8I) is CalculiX's element type; SKIP_RUBBERDYN=1
+# the default, C3D8R or C3D8I) is CalculiX's element type (the output
+# interval assumes C3D8's stable increment); SKIP_RUBBERDYN=1
 # reuses WORK_DIR/rubberdyn, SKIP_CCX=1 reuses WORK_DIR/ccx (to redo the
 # comparison only).
 #
