@@ -6,6 +6,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <istream>
+#include <ostream>
 #include <iomanip>
 #include <sstream>
 
@@ -123,6 +126,149 @@ namespace rubberdyn
 
     namespace
     {
+      constexpr char         checkpoint_magic[8] = "RDYNCK1";
+      constexpr unsigned int checkpoint_version  = 1;
+
+      void
+      write_doubles(std::ostream &out, const double *data, const std::size_t n)
+      {
+        const std::uint64_t size = n;
+        out.write(reinterpret_cast<const char *>(&size), sizeof(size));
+        out.write(reinterpret_cast<const char *>(data), n * sizeof(double));
+      }
+
+      // Read n doubles written by write_doubles(); @p what names them in
+      // the error message if the stored size differs.
+      void
+      read_doubles(std::istream &     in,
+                   double *           data,
+                   const std::size_t  n,
+                   const std::string &what)
+      {
+        std::uint64_t size = 0;
+        in.read(reinterpret_cast<char *>(&size), sizeof(size));
+        if (!in || size != n)
+          throw SolverFailure("the checkpoint does not fit this model: it has " +
+                              std::to_string(size) + " values of " + what +
+                              ", the model " + std::to_string(n));
+        in.read(reinterpret_cast<char *>(data), n * sizeof(double));
+        if (!in)
+          throw SolverFailure("the checkpoint ends early (in " + what + ")");
+      }
+    } // namespace
+
+
+
+    void
+    ExplicitSolver::save(std::ostream &out) const
+    {
+      out.write(checkpoint_magic, sizeof(checkpoint_magic));
+      const unsigned int header[2] = {checkpoint_version,
+                                      Utilities::MPI::n_mpi_processes(comm)};
+      out.write(reinterpret_cast<const char *>(header), sizeof(header));
+      const double scalars[14] = {current_time,
+                                  last_time_step,
+                                  double(step_number),
+                                  started ? 1. : 0.,
+                                  gravity_work_increment,
+                                  energy.kinetic,
+                                  energy.internal,
+                                  energy.external_work,
+                                  energy.contact,
+                                  energy.bulk_viscosity_work,
+                                  energy.friction_work,
+                                  energy.initial,
+                                  energy.largest_energy,
+                                  double(bodies.size())};
+      write_doubles(out, scalars, 14);
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      write_doubles(out, u.begin(), n_owned);
+      write_doubles(out, v.begin(), n_owned);
+      for (const RigidBody &body : bodies)
+        {
+          double values[9];
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              values[d]     = body.displacement[d];
+              values[3 + d] = body.velocity[d];
+              values[6 + d] = body.contact_force[d];
+            }
+          write_doubles(out, values, 9);
+        }
+      write_doubles(out, reaction.data(), reaction.size());
+      const std::vector<double> &history = elements.history();
+      write_doubles(out, history.data(), history.size());
+      const std::vector<double> &friction = contact.state();
+      write_doubles(out, friction.data(), friction.size());
+      if (!out)
+        throw SolverFailure("writing the checkpoint failed");
+    }
+
+
+
+    void
+    ExplicitSolver::load(std::istream &in)
+    {
+      char magic[sizeof(checkpoint_magic)] = {};
+      in.read(magic, sizeof(magic));
+      if (!in || std::string(magic) != checkpoint_magic)
+        throw SolverFailure("not a rubberdyn checkpoint");
+      unsigned int header[2] = {0, 0};
+      in.read(reinterpret_cast<char *>(header), sizeof(header));
+      if (header[0] != checkpoint_version)
+        throw SolverFailure("checkpoint version " + std::to_string(header[0]) +
+                            " is not " + std::to_string(checkpoint_version));
+      if (header[1] != Utilities::MPI::n_mpi_processes(comm))
+        throw SolverFailure("the checkpoint was written by " +
+                            std::to_string(header[1]) +
+                            " ranks; restart with as many");
+      double scalars[14];
+      read_doubles(in, scalars, 14, "scalars");
+      if (static_cast<unsigned int>(scalars[13]) != bodies.size())
+        throw SolverFailure("the checkpoint has " +
+                            std::to_string(int(scalars[13])) +
+                            " rigid bodies, the model " +
+                            std::to_string(bodies.size()));
+      current_time               = scalars[0];
+      last_time_step             = scalars[1];
+      step_number                = static_cast<unsigned int>(scalars[2]);
+      started                    = scalars[3] != 0.;
+      gravity_work_increment     = scalars[4];
+      energy.kinetic             = scalars[5];
+      energy.internal            = scalars[6];
+      energy.external_work       = scalars[7];
+      energy.contact             = scalars[8];
+      energy.bulk_viscosity_work = scalars[9];
+      energy.friction_work       = scalars[10];
+      energy.initial             = scalars[11];
+      energy.largest_energy      = scalars[12];
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      read_doubles(in, u.begin(), n_owned, "displacements");
+      read_doubles(in, v.begin(), n_owned, "velocities");
+      u.update_ghost_values();
+      v.update_ghost_values();
+      for (RigidBody &body : bodies)
+        {
+          double values[9];
+          read_doubles(in, values, 9, "rigid-body values");
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              body.displacement[d]  = values[d];
+              body.velocity[d]      = values[3 + d];
+              body.contact_force[d] = values[6 + d];
+            }
+        }
+      read_doubles(in, reaction.data(), reaction.size(), "reactions");
+      std::vector<double> &history = elements.history();
+      read_doubles(in, history.data(), history.size(), "material history");
+      std::vector<double> &friction = contact.state();
+      read_doubles(in, friction.data(), friction.size(), "contact state");
+    }
+
+
+
+    namespace
+    {
       // Seconds since @p start, and restart the clock.
       double
       lap(std::chrono::steady_clock::time_point &start)
@@ -169,7 +315,6 @@ namespace rubberdyn
       constexpr unsigned int n_energy_sums = 7;
       std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
       std::vector<double> local_reaction(n_groups);
-      double              gravity_work_increment = 0.;
       auto                clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {

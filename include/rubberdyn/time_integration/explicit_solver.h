@@ -10,6 +10,7 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -200,6 +201,26 @@ namespace rubberdyn
        * the solid at the current time, summed over all ranks.
        */
       const std::vector<double> &reactions() const { return reaction; }
+      /**
+       * Write this rank's part of the complete model state between two
+       * steps (time, step, displacements, velocities, energies, rigid
+       * bodies, reactions, material history, contact state) to @p out,
+       * binary. run() may be called again afterwards, or another solver of
+       * the same model (same mesh, partition, laws, contact surfaces and
+       * bodies) can load() it and continue: the continuation is identical
+       * to the last bit (tests/explicit/restart_is_identical).
+       */
+      void
+      save(std::ostream &out) const;
+
+      /**
+       * Read what save() wrote, on the same number of ranks.
+       *
+       * @throws SolverFailure naming what does not fit (ranks, sizes).
+       */
+      void
+      load(std::istream &in);
+
       /** Time spent in each part of the steps so far (s, this rank). */
       const StepTimings &timings() const { return timing; }
 
@@ -220,6 +241,8 @@ namespace rubberdyn
       EnergyBalance energy;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
+      /** Gravity work of the last displacement update, booked next step. */
+      double                      gravity_work_increment = 0.;
       const KinematicConstraints *constraints = nullptr;
       std::vector<double>         reaction;
       StepTimings                 timing;
