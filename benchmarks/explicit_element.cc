@@ -1,7 +1,12 @@
-// Cost of the explicit element kernel: SolidHexElements::compute_forces on
-// an F-bar Yeoh (chapter-4 rubber) mesh of n x n x n hexahedra, distorted
-// and compressed so that every Gauss point sees a general F, in ns per
-// element-cycle (wall time x ranks / (cells x evaluations)).
+// Cost of the explicit element kernel and of whole explicit time steps, in
+// ns per element-cycle (wall time x ranks / (cells x evaluations)):
+// 1. SolidHexElements::compute_forces on an F-bar Yeoh (chapter-4 rubber)
+//    mesh of n x n x n hexahedra, distorted and compressed so that every
+//    Gauss point sees a general F;
+// 2. ExplicitSolver time steps of the same block squeezed between two
+//    rigid plates (penalty contact on both end faces), with the breakdown
+//    into element forces, contact, vector updates and communication, and
+//    the cost of one ParaView output.
 //
 //   benchmarks/explicit_element [n=48] [evaluations=100] [F-bar|displacement]
 //   mpirun -np 2 benchmarks/explicit_element 48 100
@@ -18,8 +23,13 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/yeoh.h>
+#include <rubberdyn/postprocess/field_output.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include <filesystem>
 
 #include <chrono>
 #include <cmath>
@@ -41,7 +51,12 @@ main(int argc, char **argv)
   // A 24 mm cube of n^3 cells with wavy interior nodes (non-parallelepiped
   // elements).
   parallel::distributed::Triangulation<3> triangulation(comm);
-  GridGenerator::subdivided_hyper_cube(triangulation, n, 0., 24.);
+  // colorize: boundary ids 4 and 5 are the faces z = 0 and z = 24 mm.
+  GridGenerator::subdivided_hyper_rectangle(triangulation, {n, n, n},
+                                            Point<3>(0., 0., 0.),
+                                            Point<3>(24., 24., 24.), true);
+  for (const auto &cell : triangulation.active_cell_iterators())
+    cell->set_material_id(0);
   GridTools::transform(
     [](const Point<3> &x) {
       Point<3> y = x;
@@ -108,12 +123,78 @@ main(int argc, char **argv)
   const double total_energy = Utilities::MPI::sum(energy, comm);
   const double wall         = Utilities::MPI::max(seconds, comm);
   const unsigned int ranks  = Utilities::MPI::n_mpi_processes(comm);
-  if (Utilities::MPI::this_mpi_process(comm) == 0)
+  const double n_cells = triangulation.n_global_active_cells();
+  const bool   root    = Utilities::MPI::this_mpi_process(comm) == 0;
+  if (root)
     std::cout << (fbar ? "F-bar" : "displacement") << " Yeoh hexahedra: "
-              << triangulation.n_global_active_cells() << " cells, " << ranks
-              << " ranks, " << evaluations << " evaluations, "
-              << 1e9 * wall * ranks /
-                   (double(triangulation.n_global_active_cells()) * evaluations)
+              << n_cells << " cells, " << ranks << " ranks" << std::endl
+              << "element kernel alone: " << evaluations << " evaluations, "
+              << 1e9 * wall * ranks / (n_cells * evaluations)
               << " ns per element-cycle (internal energy " << total_energy
               << " J)" << std::endl;
+
+  // Whole explicit steps: the undeformed block between two plates, the
+  // top one a 50 kg impactor at 2 m/s, for `evaluations` steps.
+  const Tensor<1, 3>           up({0., 0., 1.});
+  contact::RigidSurfaceContact plates;
+  plates.initialize(dof_handler, partitioner, {4, 5}, {rubber.bulk_modulus()},
+                    0.1,
+                    {{Point<3>(0., 0., 0.), up},
+                     {Point<3>(0., 0., 24.), -up}});
+  std::vector<time_integration::RigidBody> bodies(2);
+  bodies[1].mass        = 50.;
+  bodies[1].free[2]     = true;
+  bodies[1].velocity[2] = -2.;
+  time_integration::ExplicitSolver solver(dof_handler, elements, plates,
+                                          bodies, partitioner, density_scaling,
+                                          {}, comm);
+  const std::vector<double> steps     = elements.reference_time_steps();
+  const double              min_step = Utilities::MPI::min(
+    *std::min_element(steps.begin(), steps.end()), comm);
+  const auto step_start = std::chrono::steady_clock::now();
+  solver.run(0.9 * min_step * evaluations, []() {});
+  const double step_wall = Utilities::MPI::max(
+    std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                  step_start)
+      .count(),
+    comm);
+  const auto   timings = solver.timings();
+  const double cycles  = n_cells * solver.step() / ranks;
+  const auto   ns      = [&](const double seconds) {
+    return 1e9 * Utilities::MPI::max(seconds, comm) / cycles;
+  };
+  const double element_ns = ns(timings.element_forces),
+               contact_ns = ns(timings.contact),
+               update_ns  = ns(timings.vector_updates),
+               comm_ns    = ns(timings.communication);
+
+  // One ParaView output of the whole mesh.
+  const std::string directory = "explicit_element_output";
+  std::filesystem::create_directories(directory);
+  postprocess::FieldOutput output(directory, "solution", comm);
+  const auto averages =
+    elements.cell_averages(solver.displacement(), triangulation.n_active_cells());
+  const auto output_start = std::chrono::steady_clock::now();
+  output.write(dof_handler, solver.displacement(), solver.velocity(),
+               {{"J", averages.jacobian}}, solver.time());
+  const double output_wall = Utilities::MPI::max(
+    std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                  output_start)
+      .count(),
+    comm);
+  if (root)
+    {
+      std::filesystem::remove_all(directory);
+      std::cout << "explicit steps: " << solver.step() << " steps, "
+                << 1e9 * step_wall * ranks / (n_cells * solver.step())
+                << " ns per element-cycle, of which (slowest rank)"
+                << std::endl
+                << "  element forces  " << element_ns << std::endl
+                << "  contact         " << contact_ns << std::endl
+                << "  vector updates  " << update_ns << std::endl
+                << "  communication   " << comm_ns << std::endl
+                << "one ParaView output (pvtu, displacement, velocity, J): "
+                << output_wall << " s = " << 1e9 * output_wall * ranks / n_cells
+                << " ns per element" << std::endl;
+    }
 }
