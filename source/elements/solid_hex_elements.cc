@@ -192,6 +192,25 @@ namespace rubberdyn
 
 
     std::vector<double>
+    SolidHexElements::mass_by_law(
+      const std::vector<double> &density_scaling) const
+    {
+      std::vector<double> masses(laws.size(), 0.);
+      for (unsigned int e = 0; e < elements.size(); ++e)
+        {
+          const internal::HexBlock &block  = blocks[elements[e].block];
+          double                    volume = 0.;
+          for (unsigned int q = 0; q < n_q; ++q)
+            volume += block.JxW[q][elements[e].lane];
+          masses[block.law] +=
+            laws[block.law]->density() * density_scaling[e] * volume;
+        }
+      return masses;
+    }
+
+
+
+    std::vector<double>
     SolidHexElements::reference_time_steps() const
     {
       std::vector<double> steps(elements.size());

@@ -195,6 +195,15 @@ namespace rubberdyn
       add_lumped_mass(VectorType &mass, const std::vector<double> &density_scaling) const;
 
       /**
+       * Mass (kg) of this rank's elements of each law (in the order of the
+       * laws' material ids), with the densities scaled by
+       * @p density_scaling; the caller sums over ranks. The difference with
+       * and without scaling is the added mass of mass scaling per part.
+       */
+      std::vector<double>
+      mass_by_law(const std::vector<double> &density_scaling) const;
+
+      /**
        * Stable time step of each element in the reference configuration,
        * without bulk viscosity (for mass scaling).
        */
