@@ -40,6 +40,7 @@ namespace rubberdyn
       double       bulk_viscosity_linear, bulk_viscosity_quadratic;
       double       penalty_scale;
       std::string  output_directory;
+      postprocess::FieldOutput::Format field_output_format;
       double       field_output_interval, history_output_interval;
       bool         echo_history;
       std::unique_ptr<materials::MaterialModel<3>> rubber;
@@ -112,6 +113,17 @@ namespace rubberdyn
       prm.enter_subsection("Output");
       prm.declare_entry("Field output interval", "1", Patterns::Double(0.),
                         "Time between ParaView outputs (ms); 0 writes none.");
+      prm.declare_entry(
+        "Field output format", "vtu",
+        Patterns::Selection(postprocess::FieldOutput::format_names()),
+        "'vtu': per output time a solution_NNNN.pvtu with one .vtu per rank, "
+        "indexed by solution.pvd. 'hdf5' (for large runs): per output time "
+        "one solution_NNNN.h5 written by all ranks in parallel (MPI-IO), "
+        "holding the mesh, the nodal vectors and the cell fields, indexed by "
+        "solution.xdmf. Both open in ParaView as a time series: reference "
+        "mesh with displacement, velocity (nodal), Cauchy stress "
+        "components, von Mises stress, pressure (GPa), J and MPI rank "
+        "(cell averages).");
       prm.declare_entry("Echo time history", "false", Patterns::Bool(),
                         "Also print every row of time_history.csv to the "
                         "terminal (for regression tests).");
@@ -170,6 +182,8 @@ namespace rubberdyn
       prm.enter_subsection("Output");
       p.output_directory        = prm.get("Output directory");
       p.field_output_interval   = prm.get_double("Field output interval");
+      p.field_output_format =
+        postprocess::FieldOutput::parse_format(prm.get("Field output format"));
       p.history_output_interval = prm.get_double("History output interval");
       p.echo_history            = prm.get_bool("Echo time history");
       prm.leave_subsection();
@@ -273,7 +287,8 @@ namespace rubberdyn
                      "impactor_force\n";
           history << std::setprecision(9);
         }
-      postprocess::FieldOutput fields(p.output_directory, "solution", comm);
+      postprocess::FieldOutput fields(p.output_directory, "solution", comm,
+                                      p.field_output_format);
       const auto write_fields = [&]() {
         const auto averages = elements.cell_averages(
           solver.displacement(), triangulation.n_active_cells());
@@ -349,7 +364,7 @@ namespace rubberdyn
           throw std::runtime_error(std::string("drop test stopped: ") +
                                    failure.what() +
                                    "; the last state is in " +
-                                   p.output_directory + "/solution.pvd");
+                                   fields.index_file());
         }
       write_fields();
 
