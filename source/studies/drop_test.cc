@@ -1,10 +1,12 @@
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
@@ -16,10 +18,13 @@
 #include <rubberdyn/studies/drop_test.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <map>
 #include <ostream>
 #include <sstream>
 
@@ -29,11 +34,143 @@ namespace rubberdyn
   {
     using namespace dealii;
 
+    namespace
+    {
+      /**
+       * Time after the impactor's separation from the rubber at which
+       * `Stop after rebound` ends the run (ms): long enough to see the
+       * contact force stay zero and the rebound velocity settle.
+       */
+      constexpr double rebound_margin = 1.;
+
+      /** Thrown by the monitor to end the run after the rebound. */
+      struct StopAfterRebound
+      {};
+
+      /**
+       * Area-weighted sums of the z displacement over the boundary faces
+       * with one boundary id: the weight of a node is the integral of its
+       * trilinear shape function over those faces of the locally owned
+       * cells (reference configuration, straight-sided faces as the
+       * elements see them), so the weights of all ranks add up to the
+       * faces' area and every face is counted once.
+       */
+      class FaceAverage
+      {
+      public:
+        FaceAverage(const DoFHandler<3> &              dof_handler,
+                    const Utilities::MPI::Partitioner &partitioner,
+                    const types::boundary_id           boundary_id,
+                    const MPI_Comm                     comm)
+        {
+          const FiniteElement<3> &fe = dof_handler.get_fe();
+          FEFaceValues<3>         fe_face_values(fe,
+                                         QGauss<2>(2),
+                                         update_values | update_JxW_values);
+          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          std::map<types::global_dof_index, double> weight_of_dof;
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == boundary_id)
+                  {
+                    fe_face_values.reinit(cell, f);
+                    cell->get_dof_indices(dofs);
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      if (fe.system_to_component_index(i).first == 2)
+                        for (const unsigned int q :
+                             fe_face_values.quadrature_point_indices())
+                          weight_of_dof[dofs[i]] +=
+                            fe_face_values.shape_value(i, q) *
+                            fe_face_values.JxW(q);
+                  }
+          double local_area = 0.;
+          for (const auto &[dof, weight] : weight_of_dof)
+            {
+              local_indices.push_back(partitioner.global_to_local(dof));
+              weights.push_back(weight);
+              local_area += weight;
+            }
+          area = Utilities::MPI::sum(local_area, comm);
+        }
+
+        /** This rank's share of the integral of u_z over the faces. */
+        double
+        local_integral(const VectorType &u) const
+        {
+          double sum = 0.;
+          for (unsigned int k = 0; k < weights.size(); ++k)
+            sum += weights[k] * u.local_element(local_indices[k]);
+          return sum;
+        }
+
+        /** Area of the faces, summed over all ranks (mm^2). */
+        double area = 0.;
+
+      private:
+        std::vector<unsigned int> local_indices;
+        std::vector<double>       weights;
+      };
+
+
+
+      /** Smallest Jacobian determinants of the mesh, over all ranks. */
+      struct MinimumJacobian
+      {
+        /** At the 2x2x2 Gauss points of the elements. */
+        double gauss_points;
+        /** At the element centres (the F-bar element's volume change). */
+        double centres;
+      };
+
+      /**
+       * The smallest J = det(I + grad u) at the Gauss points and at the
+       * centres of all elements (trilinear geometry, as the elements use).
+       * Collective; meant for output times, not every step.
+       */
+      MinimumJacobian
+      minimum_jacobian(const DoFHandler<3> &dof_handler,
+                       const VectorType &   u,
+                       const MPI_Comm       comm)
+      {
+        const FEValuesExtractors::Vector displacement(0);
+        FEValues<3> gauss(dof_handler.get_fe(), QGauss<3>(2), update_gradients);
+        FEValues<3> centre(dof_handler.get_fe(),
+                           QMidpoint<3>(),
+                           update_gradients);
+        const Tensor<2, 3>        identity = unit_symmetric_tensor<3>();
+        std::vector<Tensor<2, 3>> gradients(8), centre_gradient(1);
+        double min_gauss  = std::numeric_limits<double>::max();
+        double min_centre = min_gauss;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              gauss.reinit(cell);
+              gauss[displacement].get_function_gradients(u, gradients);
+              for (const Tensor<2, 3> &H : gradients)
+                min_gauss = std::min(min_gauss, determinant(identity + H));
+              centre.reinit(cell);
+              centre[displacement].get_function_gradients(u, centre_gradient);
+              min_centre =
+                std::min(min_centre, determinant(identity + centre_gradient[0]));
+            }
+        double values[2] = {min_gauss, min_centre};
+        Utilities::MPI::min(ArrayView<const double>(values, 2),
+                            comm,
+                            ArrayView<double>(values, 2));
+        return {values[0], values[1]};
+      }
+    } // namespace
+
+
+
     struct DropTest::Parameters
     {
       double       impactor_mass, impact_velocity, diameter, height;
       double       friction, gravity;
       unsigned int refinement;
+      bool         stop_after_rebound;
       double       end_time, time_step_scale, minimum_time_step;
       double       mass_scaling_time_step;
       bool         fbar;
@@ -75,6 +212,13 @@ namespace rubberdyn
                         "Gravitational acceleration (mm/ms^2), acting "
                         "downwards on the impactor and the rubber; 0 switches "
                         "it off.");
+      prm.declare_entry("Stop after rebound", "false", Patterns::Bool(),
+                        "End the run 1 ms after the impactor has separated "
+                        "from the rubber on its way back up (contact force "
+                        "zero after the impactor's velocity turned upwards), "
+                        "or at the End time, whichever comes first. The "
+                        "separation time and the rebound velocity are in "
+                        "run_summary.json either way.");
       prm.leave_subsection();
 
       prm.enter_subsection("Time integration");
@@ -156,6 +300,7 @@ namespace rubberdyn
       p.friction        = prm.get_double("Friction coefficient");
       p.refinement      = prm.get_integer("Global refinement");
       p.gravity         = prm.get_double("Gravity");
+      p.stop_after_rebound = prm.get_bool("Stop after rebound");
       prm.leave_subsection();
       require_positive(p.impactor_mass, "Drop test/Impactor mass");
       require_positive(p.diameter, "Drop test/Cylinder diameter");
@@ -275,6 +420,14 @@ namespace rubberdyn
         log << "  Lumped mass " << solver.physical_mass() << " kg, added mass "
             << solver.added_mass() << " kg" << std::endl;
 
+      // Probes of the rubber's top and bottom faces: the impactor's
+      // position includes the penetration of the penalty contact, the
+      // rubber's own height does not.
+      const FaceAverage top_face(dof_handler, *partitioner,
+                                 geometry::cylinder_boundary::top, comm);
+      const FaceAverage bottom_face(dof_handler, *partitioner,
+                                    geometry::cylinder_boundary::bottom, comm);
+
       // Output.
       std::filesystem::create_directories(p.output_directory);
       std::ofstream history;
@@ -284,11 +437,15 @@ namespace rubberdyn
           history << "time,time_step,kinetic_energy,internal_energy,"
                      "external_work,contact_work,bulk_viscosity_work,"
                      "added_mass,energy_error,impactor_displacement,"
-                     "impactor_force\n";
+                     "impactor_force,rubber_top_displacement,"
+                     "rubber_bottom_displacement\n";
           history << std::setprecision(9);
         }
       postprocess::FieldOutput fields(p.output_directory, "solution", comm,
                                       p.field_output_format);
+      MinimumJacobian min_jacobian{std::numeric_limits<double>::max(),
+                                   std::numeric_limits<double>::max()};
+      double time_of_min_jacobian = 0.;
       const auto write_fields = [&]() {
         const auto averages = elements.cell_averages(
           solver.displacement(), triangulation.n_active_cells());
@@ -303,35 +460,82 @@ namespace rubberdyn
         cell_data.emplace_back("J", averages.jacobian);
         fields.write(dof_handler, solver.displacement(), solver.velocity(),
                      cell_data, solver.time());
+        const MinimumJacobian now =
+          minimum_jacobian(dof_handler, solver.displacement(), comm);
+        if (now.gauss_points < min_jacobian.gauss_points)
+          time_of_min_jacobian = solver.time();
+        min_jacobian.gauss_points =
+          std::min(min_jacobian.gauss_points, now.gauss_points);
+        min_jacobian.centres = std::min(min_jacobian.centres, now.centres);
       };
 
       double next_history = 0., next_field = 0., max_energy_error = 0.;
       double max_force = 0., max_displacement = 0.;
+      double time_of_max_displacement = 0., max_rubber_compression = 0.;
+      double last_history_time = -1.;
+      // Rebound: the impactor's velocity has turned upwards; separation:
+      // after that, the contact force is zero (reset if contact resumes).
+      bool   rebounding = false;
+      double separation_time = -1., rebound_velocity = 0.;
       auto   last_progress = std::chrono::steady_clock::now();
+      const auto write_history_row = [&]() {
+        const double t = solver.time();
+        const auto & e = solver.energies();
+        // One MPI sum per row (never per step) for the two face probes.
+        double face_integrals[2] = {
+          top_face.local_integral(solver.displacement()),
+          bottom_face.local_integral(solver.displacement())};
+        Utilities::MPI::sum(ArrayView<const double>(face_integrals, 2),
+                            comm,
+                            ArrayView<double>(face_integrals, 2));
+        const double top    = -face_integrals[0] / top_face.area;
+        const double bottom = -face_integrals[1] / bottom_face.area;
+        max_rubber_compression =
+          std::max(max_rubber_compression, top - bottom);
+        std::ostringstream row;
+        row << std::setprecision(9);
+        row << t << ',' << solver.time_step() << ',' << e.kinetic << ','
+            << e.internal << ',' << e.external_work << ',' << e.contact << ','
+            << e.bulk_viscosity_work << ',' << solver.added_mass() << ','
+            << e.relative_error() << ',' << -bodies[1].displacement[2] << ','
+            << bodies[1].contact_force[2] << ',' << top << ',' << bottom
+            << '\n';
+        if (root)
+          {
+            history << row.str();
+            if (p.echo_history)
+              log << row.str();
+          }
+        last_history_time = t;
+      };
       const auto monitor = [&]() {
         const double t = solver.time();
         const auto & e = solver.energies();
         // The energy error is meaningful once energy has been exchanged.
         max_energy_error = std::max(max_energy_error, e.relative_error());
         max_force        = std::max(max_force, bodies[1].contact_force[2]);
-        max_displacement =
-          std::max(max_displacement, -bodies[1].displacement[2]);
+        if (-bodies[1].displacement[2] > max_displacement)
+          {
+            max_displacement         = -bodies[1].displacement[2];
+            time_of_max_displacement = t;
+          }
+        // Every rank holds the same (reduced) impactor force and velocity,
+        // so all ranks take the same decisions below.
+        if (bodies[1].velocity[2] > 0.)
+          rebounding = true;
+        if (rebounding)
+          {
+            if (bodies[1].contact_force[2] > 0.)
+              separation_time = -1.;
+            else if (separation_time < 0.)
+              {
+                separation_time  = t;
+                rebound_velocity = bodies[1].velocity[2];
+              }
+          }
         if (t >= next_history * (1. - 1e-12))
           {
-            std::ostringstream row;
-            row << std::setprecision(9);
-            row << t << ',' << solver.time_step() << ',' << e.kinetic << ','
-                << e.internal << ',' << e.external_work << ',' << e.contact
-                << ',' << e.bulk_viscosity_work << ',' << solver.added_mass()
-                << ',' << e.relative_error() << ','
-                << -bodies[1].displacement[2] << ','
-                << bodies[1].contact_force[2] << '\n';
-            if (root)
-              {
-                history << row.str();
-                if (p.echo_history)
-                  log << row.str();
-              }
+            write_history_row();
             next_history += p.history_output_interval;
           }
         if (p.field_output_interval > 0. &&
@@ -339,6 +543,13 @@ namespace rubberdyn
           {
             write_fields();
             next_field += p.field_output_interval;
+          }
+        if (p.stop_after_rebound && separation_time >= 0. &&
+            t >= separation_time + rebound_margin)
+          {
+            if (last_history_time < t)
+              write_history_row();
+            throw StopAfterRebound();
           }
         const auto now = std::chrono::steady_clock::now();
         if (root && now - last_progress > std::chrono::seconds(5))
@@ -354,9 +565,14 @@ namespace rubberdyn
           }
       };
 
+      bool stopped_after_rebound = false;
       try
         {
           solver.run(p.end_time, monitor);
+        }
+      catch (const StopAfterRebound &)
+        {
+          stopped_after_rebound = true;
         }
       catch (const time_integration::SolverFailure &failure)
         {
@@ -376,11 +592,18 @@ namespace rubberdyn
         double(triangulation.n_global_active_cells()) * solver.step();
       if (root)
         {
+          const auto json_time = [](const double t) {
+            return t >= 0. ? std::to_string(t) : std::string("null");
+          };
           std::ofstream summary(p.output_directory + "/run_summary.json");
+          summary << std::setprecision(9);
           summary << "{\n  \"cells\": " << triangulation.n_global_active_cells()
                   << ",\n  \"dofs\": " << dof_handler.n_dofs()
                   << ",\n  \"ranks\": " << Utilities::MPI::n_mpi_processes(comm)
                   << ",\n  \"time_steps\": " << solver.step()
+                  << ",\n  \"end_time\": " << solver.time()
+                  << ",\n  \"stopped_after_rebound\": "
+                  << (stopped_after_rebound ? "true" : "false")
                   << ",\n  \"wall_seconds\": " << wall
                   << ",\n  \"ns_per_element_cycle\": "
                   << 1e9 * wall * Utilities::MPI::n_mpi_processes(comm) /
@@ -388,11 +611,29 @@ namespace rubberdyn
                   << ",\n  \"max_energy_error\": " << max_energy_error
                   << ",\n  \"added_mass_fraction\": "
                   << solver.added_mass() / solver.physical_mass()
+                  << ",\n  \"rubber_mass\": " << solver.physical_mass()
+                  << ",\n  \"top_face_area\": " << top_face.area
+                  << ",\n  \"bottom_face_area\": " << bottom_face.area
                   << ",\n  \"max_impactor_force\": " << max_force
                   << ",\n  \"max_impactor_displacement\": " << max_displacement
+                  << ",\n  \"time_of_max_impactor_displacement\": "
+                  << time_of_max_displacement
+                  << ",\n  \"max_rubber_compression\": "
+                  << max_rubber_compression
+                  << ",\n  \"separation_time\": " << json_time(separation_time)
+                  << ",\n  \"rebound_velocity\": " << rebound_velocity
+                  << ",\n  \"min_jacobian_gauss_points\": "
+                  << min_jacobian.gauss_points
+                  << ",\n  \"min_jacobian_centres\": " << min_jacobian.centres
+                  << ",\n  \"time_of_min_jacobian\": " << time_of_min_jacobian
                   << "\n}\n";
           // Wall time and speed are in run_summary.json only, so that the
           // log of a run is reproducible.
+          if (stopped_after_rebound)
+            log << "Stopped " << rebound_margin
+                << " ms after the impactor left the rubber at t = "
+                << separation_time << " ms, rebound velocity "
+                << rebound_velocity << " mm/ms" << std::endl;
           log << "Finished: " << solver.step() << " steps to t = "
               << solver.time() << " ms; largest energy error "
               << max_energy_error * 100. << " %" << std::endl;

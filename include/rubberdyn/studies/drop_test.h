@@ -18,8 +18,16 @@ namespace rubberdyn
      * frictionless penalty contact with both plates.
      *
      * Writes `time_history.csv` (energies, `impactor_displacement` and
-     * `impactor_force`, compression positive), a ParaView series
-     * `solution.pvd` and `run_summary.json` in the output directory.
+     * `impactor_force`, compression positive, then
+     * `rubber_top_displacement` and `rubber_bottom_displacement`: minus the
+     * area-weighted mean z displacement of the rubber's top and bottom
+     * faces, i.e. downwards positive, so that the rubber's own height is
+     * H - top + bottom without the penetration of the penalty contacts), a
+     * ParaView series `solution.pvd` and `run_summary.json` (run statistics,
+     * face areas of the faceted mesh, largest compressions, separation time
+     * and rebound velocity, smallest Jacobian at the field outputs) in the
+     * output directory. `Drop test/Stop after rebound` ends the run shortly
+     * after the impactor has left the rubber.
      */
     class DropTest : public Study
     {
