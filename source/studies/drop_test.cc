@@ -161,6 +161,38 @@ namespace rubberdyn
                             ArrayView<double>(values, 2));
         return {values[0], values[1]};
       }
+
+      // The time of the checkpoint in @p output_directory.
+      double
+      read_checkpoint_time(const std::string &output_directory)
+      {
+        const std::string path = output_directory + "/checkpoint/study.txt";
+        std::ifstream     study(path);
+        std::string       key;
+        double            time = -1.;
+        study >> key >> time;
+        if (!study || key != "time")
+          throw InputError("Output/Restart from checkpoint",
+                           "there is no readable checkpoint (" + path + ")");
+        return time;
+      }
+
+      // The header and the rows of the CSV file @p path whose first column
+      // (the time) is below @p time.
+      std::string
+      rows_before(const std::string &path, const double time)
+      {
+        std::ifstream file(path);
+        std::string   line, kept;
+        if (!std::getline(file, line))
+          throw InputError("Output/Restart from checkpoint",
+                           "cannot read " + path);
+        kept = line + '\n';
+        while (std::getline(file, line))
+          if (!line.empty() && std::stod(line.substr(0, line.find(','))) < time)
+            kept += line + '\n';
+        return kept;
+      }
     } // namespace
 
 
@@ -180,6 +212,8 @@ namespace rubberdyn
       postprocess::FieldOutput::Format field_output_format;
       double       field_output_interval, history_output_interval;
       bool         echo_history;
+      double       checkpoint_interval;
+      bool         restart;
       std::unique_ptr<materials::MaterialModel<3>> rubber;
     };
 
@@ -275,6 +309,20 @@ namespace rubberdyn
                         Patterns::Double(0.),
                         "Time between rows of time_history.csv (ms); 0 "
                         "writes every step.");
+      prm.declare_entry("Checkpoint interval", "0", Patterns::Double(0.),
+                        "Time between checkpoints (ms), written to the "
+                        "directory 'checkpoint' in the output directory (one "
+                        "binary file per rank plus study.txt, each replacing "
+                        "the previous one); 0 writes none.");
+      prm.declare_entry("Restart from checkpoint", "false", Patterns::Bool(),
+                        "Continue from the checkpoint in the output "
+                        "directory instead of starting at t = 0, with the "
+                        "same number of ranks and the same model parameters "
+                        "(End time and the output settings may differ). The "
+                        "run continues exactly as the original would have; "
+                        "time_history.csv keeps its rows before the "
+                        "checkpoint, the ParaView series goes on in "
+                        "solution_restart.pvd (.xdmf).");
       prm.leave_subsection();
 
       prm.enter_subsection("Materials");
@@ -331,6 +379,8 @@ namespace rubberdyn
         postprocess::FieldOutput::parse_format(prm.get("Field output format"));
       p.history_output_interval = prm.get_double("History output interval");
       p.echo_history            = prm.get_bool("Echo time history");
+      p.checkpoint_interval     = prm.get_double("Checkpoint interval");
+      p.restart                 = prm.get_bool("Restart from checkpoint");
       prm.leave_subsection();
 
       prm.enter_subsection("Materials");
@@ -416,9 +466,22 @@ namespace rubberdyn
       time_integration::ExplicitSolver solver(dof_handler, elements, plates,
                                               bodies, partitioner,
                                               density_scaling, settings, comm);
+      // Added mass of mass scaling per part (one part here).
+      std::vector<double> added_mass_by_part =
+        elements.mass_by_law(density_scaling);
+      {
+        const std::vector<double> physical = elements.mass_by_law(
+          std::vector<double>(density_scaling.size(), 1.));
+        for (unsigned int i = 0; i < added_mass_by_part.size(); ++i)
+          added_mass_by_part[i] -= physical[i];
+        Utilities::MPI::sum(ArrayView<const double>(added_mass_by_part),
+                            comm,
+                            ArrayView<double>(added_mass_by_part));
+      }
       if (root)
         log << "  Lumped mass " << solver.physical_mass() << " kg, added mass "
-            << solver.added_mass() << " kg" << std::endl;
+            << solver.added_mass() << " kg (Rubber " << added_mass_by_part[0]
+            << " kg)" << std::endl;
 
       // Probes of the rubber's top and bottom faces: the impactor's
       // position includes the penetration of the penalty contact, the
@@ -433,15 +496,31 @@ namespace rubberdyn
       std::ofstream history;
       if (root)
         {
-          history.open(p.output_directory + "/time_history.csv");
-          history << "time,time_step,kinetic_energy,internal_energy,"
-                     "external_work,contact_work,bulk_viscosity_work,"
-                     "added_mass,energy_error,impactor_displacement,"
-                     "impactor_force,rubber_top_displacement,"
-                     "rubber_bottom_displacement\n";
+          const std::string path = p.output_directory + "/time_history.csv";
+          if (p.restart)
+            {
+              // Keep the rows before the checkpoint; the restarted run
+              // writes the rest.
+              const std::string kept =
+                rows_before(path, read_checkpoint_time(p.output_directory));
+              history.open(path);
+              history << kept;
+            }
+          else
+            {
+              history.open(path);
+              history << "time,time_step,kinetic_energy,internal_energy,"
+                         "external_work,contact_work,bulk_viscosity_work,"
+                         "added_mass,energy_error,impactor_displacement,"
+                         "impactor_force,rubber_top_displacement,"
+                         "rubber_bottom_displacement,friction_work\n";
+            }
           history << std::setprecision(9);
         }
-      postprocess::FieldOutput fields(p.output_directory, "solution", comm,
+      postprocess::FieldOutput fields(p.output_directory,
+                                      p.restart ? "solution_restart" :
+                                                  "solution",
+                                      comm,
                                       p.field_output_format);
       MinimumJacobian min_jacobian{std::numeric_limits<double>::max(),
                                    std::numeric_limits<double>::max()};
@@ -499,7 +578,7 @@ namespace rubberdyn
             << e.bulk_viscosity_work << ',' << solver.added_mass() << ','
             << e.relative_error() << ',' << -bodies[1].displacement[2] << ','
             << bodies[1].contact_force[2] << ',' << top << ',' << bottom
-            << '\n';
+            << ',' << e.friction_work << '\n';
         if (root)
           {
             history << row.str();
@@ -565,10 +644,107 @@ namespace rubberdyn
           }
       };
 
+      // Checkpoints: the solver's state per rank, and the monitor's own
+      // state (what it has seen and when it writes next) in study.txt.
+      const std::string checkpoint_directory =
+        p.output_directory + "/checkpoint";
+      const std::string rank_file =
+        checkpoint_directory + "/rank_" +
+        std::to_string(Utilities::MPI::this_mpi_process(comm)) + ".bin";
+      double next_checkpoint = p.checkpoint_interval;
+      // The monitor's state, in a fixed order.
+      const auto monitor_state = [&]() {
+        return std::vector<double *>{&next_history,
+                                     &next_field,
+                                     &max_energy_error,
+                                     &max_force,
+                                     &max_displacement,
+                                     &time_of_max_displacement,
+                                     &max_rubber_compression,
+                                     &last_history_time,
+                                     &separation_time,
+                                     &rebound_velocity,
+                                     &min_jacobian.gauss_points,
+                                     &min_jacobian.centres,
+                                     &time_of_min_jacobian,
+                                     &next_checkpoint};
+      };
+      const auto write_checkpoint = [&]() {
+        if (root)
+          std::filesystem::create_directories(checkpoint_directory);
+        MPI_Barrier(comm);
+        {
+          std::ofstream out(rank_file + ".new", std::ios::binary);
+          solver.save(out);
+        }
+        MPI_Barrier(comm);
+        std::filesystem::rename(rank_file + ".new", rank_file);
+        if (root)
+          {
+            std::ofstream study(checkpoint_directory + "/study.txt.new");
+            study << std::setprecision(17) << "time " << solver.time() << '\n'
+                  << "ranks " << Utilities::MPI::n_mpi_processes(comm)
+                  << '\n'
+                  << "rebounding " << (rebounding ? 1 : 0) << '\n';
+            for (const double *value : monitor_state())
+              study << *value << '\n';
+            study.close();
+            std::filesystem::rename(checkpoint_directory + "/study.txt.new",
+                                    checkpoint_directory + "/study.txt");
+          }
+      };
+      if (p.restart)
+        {
+          std::ifstream study(checkpoint_directory + "/study.txt");
+          std::ifstream in(rank_file, std::ios::binary);
+          if (!study || !in)
+            throw InputError("Output/Restart from checkpoint",
+                             "there is no complete checkpoint in " +
+                               checkpoint_directory);
+          std::string  key;
+          double       time_value;
+          unsigned int ranks, rebounding_flag;
+          study >> key >> time_value >> key >> ranks >> key >> rebounding_flag;
+          for (double *value : monitor_state())
+            study >> *value;
+          if (!study)
+            throw InputError("Output/Restart from checkpoint",
+                             checkpoint_directory + "/study.txt is damaged");
+          rebounding = (rebounding_flag != 0);
+          try
+            {
+              solver.load(in);
+            }
+          catch (const time_integration::SolverFailure &failure)
+            {
+              throw InputError("Output/Restart from checkpoint",
+                               "cannot continue from " + checkpoint_directory +
+                                 ": " + failure.what());
+            }
+          if (root)
+            log << "  Restarted from the checkpoint at t = " << solver.time()
+                << " ms, step " << solver.step() << std::endl;
+        }
+
       bool stopped_after_rebound = false;
       try
         {
-          solver.run(p.end_time, monitor);
+          // Run in segments that end at the checkpoint times (a segmented
+          // run is the same arithmetic as an unsegmented one).
+          while (solver.time() < p.end_time * (1. - 1e-12))
+            {
+              const double stop =
+                p.checkpoint_interval > 0. ?
+                  std::min(p.end_time, next_checkpoint) :
+                  p.end_time;
+              solver.run(stop, monitor);
+              if (p.checkpoint_interval > 0. &&
+                  solver.time() >= next_checkpoint * (1. - 1e-12))
+                {
+                  next_checkpoint += p.checkpoint_interval;
+                  write_checkpoint();
+                }
+            }
         }
       catch (const StopAfterRebound &)
         {
@@ -590,6 +766,16 @@ namespace rubberdyn
           .count();
       const double element_cycles =
         double(triangulation.n_global_active_cells()) * solver.step();
+      // Slowest rank's time in each part of the steps, per element-cycle.
+      time_integration::StepTimings timings = solver.timings();
+      for (double *t : {&timings.element_forces, &timings.contact,
+                        &timings.vector_updates, &timings.communication,
+                        &timings.output})
+        *t = Utilities::MPI::max(*t, comm);
+      const auto per_cycle = [&](const double seconds) {
+        return 1e9 * seconds * Utilities::MPI::n_mpi_processes(comm) /
+               element_cycles;
+      };
       if (root)
         {
           const auto json_time = [](const double t) {
@@ -608,9 +794,20 @@ namespace rubberdyn
                   << ",\n  \"ns_per_element_cycle\": "
                   << 1e9 * wall * Utilities::MPI::n_mpi_processes(comm) /
                        element_cycles
+                  << ",\n  \"ns_per_element_cycle_breakdown\": {"
+                  << "\"element_forces\": " << per_cycle(timings.element_forces)
+                  << ", \"contact\": " << per_cycle(timings.contact)
+                  << ", \"vector_updates\": "
+                  << per_cycle(timings.vector_updates)
+                  << ", \"communication\": " << per_cycle(timings.communication)
+                  << ", \"output\": " << per_cycle(timings.output) << "}"
                   << ",\n  \"max_energy_error\": " << max_energy_error
                   << ",\n  \"added_mass_fraction\": "
                   << solver.added_mass() / solver.physical_mass()
+                  << ",\n  \"added_mass_by_part\": {\"Rubber\": "
+                  << added_mass_by_part[0] << "}"
+                  << ",\n  \"friction_work\": "
+                  << solver.energies().friction_work
                   << ",\n  \"rubber_mass\": " << solver.physical_mass()
                   << ",\n  \"top_face_area\": " << top_face.area
                   << ",\n  \"bottom_face_area\": " << bottom_face.area
