@@ -154,8 +154,9 @@ namespace rubberdyn
 
       std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
       // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
-      // and constraint work, then the body forces and the reactions.
-      constexpr unsigned int n_energy_sums = 6;
+      // work, the constraints' work up to t_n and their work at t_n that
+      // belongs to t_{n+1}, then the body forces and the reactions.
+      constexpr unsigned int n_energy_sums = 7;
       std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
       std::vector<double> local_reaction(n_groups);
       double              gravity_work_increment = 0.;
@@ -228,8 +229,15 @@ namespace rubberdyn
               v.local_element(i) = v_new;
             }
           // Prescribed velocities at t_{n+1/2}, their reactions and work
-          // (the kinetic energy of the free update is corrected).
-          double constraint_work = 0.;
+          // (the kinetic energy of the free update is corrected). Their
+          // work follows the trapezoidal rule per step, as the energies are
+          // at t_n: (r^{n-1} + r^n) / 2 times the displacement increment on
+          // [t_{n-1}, t_n]. The half with r^n counts now, the one on
+          // [t_n, t_{n+1}] with the energies at t_{n+1}. The first step
+          // starts from the velocity at t_0 itself: its work goes to t_1,
+          // with the mean velocity, which also counts a jump from the
+          // initial to the prescribed velocity exactly.
+          double constraint_work = 0., constraint_work_next = 0.;
           std::fill(local_reaction.begin(), local_reaction.end(), 0.);
           if (constraints != nullptr)
             {
@@ -248,7 +256,14 @@ namespace rubberdyn
                   const double r =
                     m * (v_new - v_old) / average_step - f.local_element(i);
                   local_reaction[entry.group] += r;
-                  constraint_work += r * 0.5 * (v_old + v_new) * average_step;
+                  if (started)
+                    {
+                      constraint_work += 0.5 * r * v_old * last_time_step;
+                      constraint_work_next += 0.5 * r * v_new * new_step;
+                    }
+                  else
+                    constraint_work_next +=
+                      r * 0.5 * (v_old + v_new) * average_step;
                   kinetic += 0.125 * m *
                              ((v_old + v_new) * (v_old + v_new) -
                               (v_old + v_free) * (v_old + v_free));
@@ -265,6 +280,7 @@ namespace rubberdyn
           sums[3] = element_result.bulk_viscosity_power;
           sums[4] = gravity_work_increment;
           sums[5] = constraint_work;
+          sums[6] = constraint_work_next;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
               sums[n_energy_sums + 3 * b + d] =
@@ -280,7 +296,8 @@ namespace rubberdyn
           energy.internal = sums[1];
           energy.contact  = sums[2];
           energy.bulk_viscosity_work += sums[3] * average_step;
-          energy.external_work += sums[4] + sums[5];
+          energy.external_work += sums[4] + constraint_work_ahead + sums[5];
+          constraint_work_ahead = sums[6];
           for (unsigned int g = 0; g < n_groups; ++g)
             reaction[g] = sums[n_energy_sums + 3 * n_bodies + g];
           for (unsigned int b = 0; b < n_bodies; ++b)
