@@ -166,7 +166,7 @@ namespace rubberdyn
       const unsigned int header[2] = {checkpoint_version,
                                       Utilities::MPI::n_mpi_processes(comm)};
       out.write(reinterpret_cast<const char *>(header), sizeof(header));
-      const double scalars[14] = {current_time,
+      const double scalars[15] = {current_time,
                                   last_time_step,
                                   double(step_number),
                                   started ? 1. : 0.,
@@ -179,8 +179,9 @@ namespace rubberdyn
                                   energy.friction_work,
                                   energy.initial,
                                   energy.largest_energy,
-                                  double(bodies.size())};
-      write_doubles(out, scalars, 14);
+                                  double(bodies.size()),
+                                  constraint_work_ahead};
+      write_doubles(out, scalars, 15);
       const unsigned int n_owned = partitioner->locally_owned_size();
       write_doubles(out, u.begin(), n_owned);
       write_doubles(out, v.begin(), n_owned);
@@ -222,8 +223,8 @@ namespace rubberdyn
         throw SolverFailure("the checkpoint was written by " +
                             std::to_string(header[1]) +
                             " ranks; restart with as many");
-      double scalars[14];
-      read_doubles(in, scalars, 14, "scalars");
+      double scalars[15];
+      read_doubles(in, scalars, 15, "scalars");
       if (static_cast<unsigned int>(scalars[13]) != bodies.size())
         throw SolverFailure("the checkpoint has " +
                             std::to_string(int(scalars[13])) +
@@ -242,6 +243,7 @@ namespace rubberdyn
       energy.friction_work       = scalars[10];
       energy.initial             = scalars[11];
       energy.largest_energy      = scalars[12];
+      constraint_work_ahead      = scalars[14];
       const unsigned int n_owned = partitioner->locally_owned_size();
       read_doubles(in, u.begin(), n_owned, "displacements");
       read_doubles(in, v.begin(), n_owned, "velocities");
@@ -309,10 +311,11 @@ namespace rubberdyn
         }
 
       std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
-      // Collective 2: kinetic, internal, contact, bulk viscosity, gravity,
-      // constraint and friction work, then the body forces and the
+      // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
+      // work, the constraints' work up to t_n and their work at t_n that
+      // belongs to t_{n+1}, friction work, then the body forces and the
       // reactions.
-      constexpr unsigned int n_energy_sums = 7;
+      constexpr unsigned int n_energy_sums = 8;
       std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
       std::vector<double> local_reaction(n_groups);
       auto                clock = std::chrono::steady_clock::now();
@@ -384,8 +387,15 @@ namespace rubberdyn
               v.local_element(i) = v_new;
             }
           // Prescribed velocities at t_{n+1/2}, their reactions and work
-          // (the kinetic energy of the free update is corrected).
-          double constraint_work = 0.;
+          // (the kinetic energy of the free update is corrected). Their
+          // work follows the trapezoidal rule per step, as the energies are
+          // at t_n: (r^{n-1} + r^n) / 2 times the displacement increment on
+          // [t_{n-1}, t_n]. The half with r^n counts now, the one on
+          // [t_n, t_{n+1}] with the energies at t_{n+1}. The first step
+          // starts from the velocity at t_0 itself: its work goes to t_1,
+          // with the mean velocity, which also counts a jump from the
+          // initial to the prescribed velocity exactly.
+          double constraint_work = 0., constraint_work_next = 0.;
           std::fill(local_reaction.begin(), local_reaction.end(), 0.);
           if (constraints != nullptr)
             {
@@ -404,7 +414,14 @@ namespace rubberdyn
                   const double r =
                     m * (v_new - v_old) / average_step - f.local_element(i);
                   local_reaction[entry.group] += r;
-                  constraint_work += r * 0.5 * (v_old + v_new) * average_step;
+                  if (started)
+                    {
+                      constraint_work += 0.5 * r * v_old * last_time_step;
+                      constraint_work_next += 0.5 * r * v_new * new_step;
+                    }
+                  else
+                    constraint_work_next +=
+                      r * 0.5 * (v_old + v_new) * average_step;
                   kinetic += 0.125 * m *
                              ((v_old + v_new) * (v_old + v_new) -
                               (v_old + v_free) * (v_old + v_free));
@@ -421,7 +438,8 @@ namespace rubberdyn
           sums[3] = element_result.bulk_viscosity_power;
           sums[4] = gravity_work_increment;
           sums[5] = constraint_work;
-          sums[6] = contact_result.friction_dissipation;
+          sums[6] = constraint_work_next;
+          sums[7] = contact_result.friction_dissipation;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
               sums[n_energy_sums + 3 * b + d] =
@@ -437,8 +455,9 @@ namespace rubberdyn
           energy.internal = sums[1];
           energy.contact  = sums[2];
           energy.bulk_viscosity_work += sums[3] * average_step;
-          energy.external_work += sums[4] + sums[5];
-          energy.friction_work += sums[6];
+          energy.external_work += sums[4] + constraint_work_ahead + sums[5];
+          constraint_work_ahead = sums[6];
+          energy.friction_work += sums[7];
           for (unsigned int g = 0; g < n_groups; ++g)
             reaction[g] = sums[n_energy_sums + 3 * n_bodies + g];
           for (unsigned int b = 0; b < n_bodies; ++b)

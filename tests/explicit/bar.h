@@ -108,6 +108,30 @@ namespace bar
       return {dofs.begin(), dofs.end()};
     }
 
+    /**
+     * Local indices of the locally owned degrees of freedom of direction
+     * @p component (0, 1, 2) of all nodes.
+     */
+    std::vector<unsigned int>
+    owned_dofs_of_component(const unsigned int component) const
+    {
+      std::set<unsigned int>               dofs;
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const types::global_dof_index i =
+                  dof_indices[fe.component_to_system_index(component, v)];
+                if (partitioner->in_local_range(i))
+                  dofs.insert(partitioner->global_to_local(i));
+              }
+          }
+      return {dofs.begin(), dofs.end()};
+    }
+
     const double                                 width, length;
     const MPI_Comm                               comm;
     parallel::distributed::Triangulation<3>      triangulation;
@@ -128,6 +152,94 @@ namespace bar
     double speed = 0.;
   };
 
+
+  /**
+   * Tracks the arrival of a velocity-step front of amplitude @p v0 (mm/ms)
+   * at cross-sections z = stations (node layers) of a bar initially at
+   * rest: the front arrives at a station when the mean axial velocity of
+   * the nodes of that cross-section first reaches v0 / 2, interpolated
+   * linearly between steps; the velocity the solver holds after a step
+   * belongs to the half step t_n + dt / 2. Call record() from the solver's
+   * monitor, on every rank.
+   */
+  class FrontTracker
+  {
+  public:
+    FrontTracker(const Bar                 &bar,
+                 const std::vector<double> &stations,
+                 const double               v0)
+      : comm(bar.comm)
+      , v0(v0)
+      , previous_v(stations.size(), 0.)
+    {
+      for (const double z : stations)
+        {
+          dofs.push_back(bar.axial_dofs_at(z));
+          n_nodes.push_back(
+            Utilities::MPI::sum<unsigned int>(dofs.back().size(), bar.comm));
+          arrivals.z.push_back(z);
+          arrivals.t.push_back(-1.);
+        }
+    }
+
+    /** Take the solver's state after a step into account. */
+    void
+    record(const rubberdyn::time_integration::ExplicitSolver &solver)
+    {
+      const unsigned int  n = arrivals.z.size();
+      const double        t = solver.time() + 0.5 * solver.time_step();
+      std::vector<double> sums(n, 0.);
+      for (unsigned int s = 0; s < n; ++s)
+        for (const unsigned int i : dofs[s])
+          sums[s] += solver.velocity().local_element(i);
+      Utilities::MPI::sum(ArrayView<const double>(sums),
+                          comm,
+                          ArrayView<double>(sums));
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          const double v = sums[s] / n_nodes[s];
+          if (arrivals.t[s] < 0. && v >= 0.5 * v0)
+            arrivals.t[s] = previous_t + (t - previous_t) *
+                                           (0.5 * v0 - previous_v[s]) /
+                                           (v - previous_v[s]);
+          previous_v[s] = v;
+        }
+      previous_t = t;
+    }
+
+    /** The arrivals so far and the least-squares fit z = z_0 + speed t. */
+    FrontArrivals
+    result() const
+    {
+      FrontArrivals      result = arrivals;
+      const unsigned int n      = result.z.size();
+      double             mean_t = 0., mean_z = 0.;
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          mean_t += result.t[s] / n;
+          mean_z += result.z[s] / n;
+        }
+      double stt = 0., stz = 0.;
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          stt += (result.t[s] - mean_t) * (result.t[s] - mean_t);
+          stz += (result.t[s] - mean_t) * (result.z[s] - mean_z);
+        }
+      result.speed = stz / stt;
+      return result;
+    }
+
+  private:
+    const MPI_Comm                         comm;
+    const double                           v0;
+    std::vector<std::vector<unsigned int>> dofs;
+    std::vector<unsigned int>              n_nodes;
+    FrontArrivals                          arrivals;
+    std::vector<double>                    previous_v;
+    double                                 previous_t = 0.;
+  };
+
+
   /**
    * Push the end z = 0 of the bar, initially at rest, with a rigid plane
    * of huge mass (1e6 kg, millions of times the bar's, free along z)
@@ -137,11 +249,9 @@ namespace bar
    * outwards (a bar in a closely fitting rigid sleeve: uniaxial strain in
    * compression).
    *
-   * The front arrives at a station z when the mean axial velocity of the
-   * nodes of that cross-section first reaches v0 / 2, interpolated
-   * linearly between steps; the velocity the solver holds after a step
-   * belongs to the half step t_n + dt / 2. The run ends at @p end_time
-   * (ms), before the reflection from the free end returns to any station.
+   * The arrivals of the front at @p stations are those of FrontTracker.
+   * The run ends at @p end_time (ms), before the reflection from the free
+   * end returns to any station.
    */
   inline FrontArrivals
   step_load_front(const Bar                                    &bar,
@@ -195,56 +305,9 @@ namespace bar
                               ti::ExplicitSettings(),
                               bar.comm);
 
-    FrontArrivals                          result;
-    std::vector<std::vector<unsigned int>> dofs;
-    std::vector<unsigned int>              n_nodes;
-    for (const double z : stations)
-      {
-        dofs.push_back(bar.axial_dofs_at(z));
-        n_nodes.push_back(
-          Utilities::MPI::sum<unsigned int>(dofs.back().size(), bar.comm));
-        result.z.push_back(z);
-        result.t.push_back(-1.);
-      }
-    std::vector<double> previous_v(stations.size(), 0.);
-    double              previous_t = 0.;
-    solver.run(end_time, [&]() {
-      const double        t = solver.time() + 0.5 * solver.time_step();
-      std::vector<double> sums(stations.size(), 0.);
-      for (unsigned int s = 0; s < stations.size(); ++s)
-        for (const unsigned int i : dofs[s])
-          sums[s] += solver.velocity().local_element(i);
-      Utilities::MPI::sum(ArrayView<const double>(sums),
-                          bar.comm,
-                          ArrayView<double>(sums));
-      for (unsigned int s = 0; s < stations.size(); ++s)
-        {
-          const double v = sums[s] / n_nodes[s];
-          if (result.t[s] < 0. && v >= 0.5 * v0)
-            result.t[s] = previous_t + (t - previous_t) *
-                                         (0.5 * v0 - previous_v[s]) /
-                                         (v - previous_v[s]);
-          previous_v[s] = v;
-        }
-      previous_t = t;
-    });
-
-    // Least-squares fit z = z_0 + speed t.
-    const unsigned int n      = stations.size();
-    double             mean_t = 0., mean_z = 0.;
-    for (unsigned int s = 0; s < n; ++s)
-      {
-        mean_t += result.t[s] / n;
-        mean_z += result.z[s] / n;
-      }
-    double stt = 0., stz = 0.;
-    for (unsigned int s = 0; s < n; ++s)
-      {
-        stt += (result.t[s] - mean_t) * (result.t[s] - mean_t);
-        stz += (result.t[s] - mean_t) * (result.z[s] - mean_z);
-      }
-    result.speed = stz / stt;
-    return result;
+    FrontTracker tracker(bar, stations, v0);
+    solver.run(end_time, [&]() { tracker.record(solver); });
+    return tracker.result();
   }
 } // namespace bar
 

@@ -137,8 +137,11 @@ namespace rubberdyn
      *
      * Kinematic constraints overwrite the half-step velocities of their
      * dofs; their reaction $r = M(v^{n+1/2} - v^{n-1/2})/\Delta t^n - f^n$
-     * is what the constraint applies to the solid, and its work
-     * $r \cdot \tfrac12(v^{n-1/2} + v^{n+1/2})\Delta t^n$ is external work.
+     * is what the constraint applies to the solid, and its work is external
+     * work, by the trapezoidal rule on each step like the energies at $t_n$:
+     * $\tfrac12 (r^{n-1} + r^n) \cdot v^{n-1/2} \Delta t^{n-1/2}$ from
+     * $t_{n-1}$ to $t_n$ (on the first step $r^0 \cdot \tfrac12 (v^0 +
+     * v^{1/2}) \Delta t^0$, exact for a jump from the initial velocity).
      */
     class ExplicitSolver
     {
@@ -245,6 +248,11 @@ namespace rubberdyn
       double                      gravity_work_increment = 0.;
       const KinematicConstraints *constraints = nullptr;
       std::vector<double>         reaction;
+      /**
+       * The constraints' reactions' share of their work on [t_n, t_{n+1}]
+       * (summed over all ranks): it belongs to the energies at t_{n+1}.
+       */
+      double constraint_work_ahead = 0.;
       StepTimings                 timing;
     };
   } // namespace time_integration
