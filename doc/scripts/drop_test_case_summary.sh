@@ -9,7 +9,8 @@
 # Maximum compression is at the time t_m of the impactor's largest
 # displacement (found every step, run_summary.json). The sampled impactor
 # force carries a high-frequency ripple (the rubber's vibration on its penalty
-# contacts: +-0.03 kN on 640 cells, +-15 % of the smallest peak forces), which
+# contacts: up to about +-0.1 kN on 640 cells, +-15 % of the smallest peak
+# forces), which
 # the history rows (every 0.02 ms) alias. The FE force at maximum compression
 # is therefore taken from the impactor's own motion, which integrates the
 # force at every step: a least-squares parabola d(t) = a0 + a1 tau + a2 tau^2
@@ -19,7 +20,8 @@
 # than 0.1 % for contacts of 10 ms or more). The plain mean of the sampled
 # force in the window is reported as well. The rubber's own compression
 # d = rubber_top_displacement - rubber_bottom_displacement is averaged over
-# the same window, and eq. 4.8 is evaluated row by row before averaging.
+# the same window (column max_rubber_compression_mm), and eq. 4.8 is
+# evaluated row by row before averaging.
 # Stretch lambda = h_max / H = (H - d) / H. The penetration of the two
 # penalty contacts is impactor_displacement - d. Energies are taken at the
 # row nearest t_m.
@@ -34,7 +36,11 @@
 #   w(lambda) = (lambda^2 + 2/lambda - 3) / 2,
 # the incompressible neo-Hookean uniaxial energy W = G w; e_thesis uses
 # M g h_max instead of M g d. W_yeoh = C10 x + C20 x^2 + C30 x^3 is the exact
-# uniaxial energy density of the chapter-4 Yeoh rubber at the stretch.
+# uniaxial energy density of the chapter-4 Yeoh rubber at the stretch, and
+# yeoh_energy_balance = (M V0^2/2 + external_work - contact_work
+# - kinetic_energy - bulk_viscosity_work) / (A H W_yeoh) - 1 at the row
+# nearest t_m: the energy left in the rubber's deformation against the
+# homogeneous uniaxial Yeoh value.
 # Energy densities in MPa (= mJ/mm^3), energies in J (= kN mm).
 set -euo pipefail
 header="mass_kg,impact_velocity_mm_per_ms,cells,max_impactor_displacement_mm,max_rubber_compression_mm,time_of_max_compression_ms,penetration_mm,stretch,fe_force_kN,fe_force_row_mean_kN,eq48_force_mesh_area_kN,eq48_force_nominal_area_kN,fe_vs_eq48_mesh_area,fe_vs_eq48_nominal_area,mesh_area_mm2,w_neo_hooke,energy_density_MPa,energy_density_thesis_MPa,yeoh_energy_density_MPa,fe_internal_energy_J,yeoh_energy_J,contact_energy_J,rubber_kinetic_energy_J,bulk_viscosity_work_J,yeoh_energy_balance,separation_time_ms,rebound_velocity_mm_per_ms,end_time_ms,time_steps,max_energy_error,wall_seconds"
