@@ -13,6 +13,12 @@
 //    belt at t* = V / (mu g) = 1.67 ms, after which it sticks. Checked: the
 //    velocity at t = 1 ms is mu g t within 2 %, and from 2.5 to 3 ms the
 //    block moves with the belt (velocity V within 0.5 %).
+// 3. The slope case again on rigid cylinders instead of the plane: a pin
+//    (solid outside) of radius 1000 mm with its axis along y 1000 mm below
+//    the block, and a tube (solid inside) of the same radius with its axis
+//    1000 mm above: locally the same floor (the block travels about 1 mm,
+//    0.001 rad of curvature), so the same acceleration within 2 %; this
+//    checks the cylinders' gaps, normals and friction.
 // The block starts touching the plane without load, so it bounces on the
 // normal penalty springs (nothing damps them): the normal force
 // oscillates around m g, which is why the checks use mean velocities over
@@ -61,7 +67,7 @@ namespace
   // under the gravity vector @p gravity; mean x velocities of the nodes at
   // about time_1 and time_2 (ms).
   Run
-  run_block(const double        mu,
+  run_block(const contact::RigidSurface &floor_surface,
             const Tensor<1, 3> &gravity,
             const double        plane_velocity,
             const double        time_1,
@@ -90,7 +96,7 @@ namespace
                      elements::ElementSettings());
     contact::RigidSurfaceContact floor;
     floor.initialize(dof_handler, partitioner, {4}, {block.bulk_modulus()},
-                     1., {{Point<3>(), Tensor<1, 3>({0., 0., 1.}), mu}});
+                     1., {floor_surface});
     // The plane's body: held, or a belt of huge mass moving along x.
     std::vector<time_integration::RigidBody> bodies(1);
     if (plane_velocity != 0.)
@@ -152,9 +158,10 @@ main(int argc, char **argv)
   const double   mu    = 0.3;
   const double   theta = numbers::PI / 6.;
 
-  const Run slope =
-    run_block(mu, Tensor<1, 3>({g * std::sin(theta), 0., -g * std::cos(theta)}),
-              0., 1., 3., comm);
+  const contact::RigidSurface plane = {Point<3>(), Tensor<1, 3>({0., 0., 1.}),
+                                      mu};
+  const Tensor<1, 3> slope_gravity({g * std::sin(theta), 0., -g * std::cos(theta)});
+  const Run slope = run_block(plane, slope_gravity, 0., 1., 3., comm);
   const double slope_acceleration =
     (slope.velocity_2 - slope.velocity_1) / (slope.time_2 - slope.time_1);
   const double expected = g * (std::sin(theta) - mu * std::cos(theta));
@@ -166,7 +173,7 @@ main(int argc, char **argv)
         << (slope.energy_error < 0.01 ? "yes" : "no") << std::endl;
 
   const double V    = 0.5;
-  const Run    belt = run_block(mu, Tensor<1, 3>({0., 0., -g}), V, 1., 3., comm);
+  const Run    belt = run_block(plane, Tensor<1, 3>({0., 0., -g}), V, 1., 3., comm);
   const double slip_error  = std::abs(belt.velocity_1 / (mu * g * belt.time_1) - 1.);
   const double stick_error = std::abs(belt.velocity_2 / V - 1.);
   out() << "belt: velocity at " << belt.time_1 << " ms " << belt.velocity_1
@@ -176,6 +183,31 @@ main(int argc, char **argv)
         << " mm/ms, belt " << V
         << ", within 0.5 %: " << (stick_error < 0.005 ? "yes" : "no")
         << std::endl;
+  // The floor as a big pin below and as a big tube above. Cells span
+  // x, y in [0, 4]: the axes pass over the block's centre line x = 2.
+  const double                R = 1000.;
+  contact::RigidSurface       pin{Point<3>(2., 0., -R), Tensor<1, 3>({0., 1., 0.}),
+                            mu, R,
+                            contact::RigidSurface::Shape::cylinder_solid_outside};
+  contact::RigidSurface tube = pin;
+  tube.point[2]              = R;
+  tube.shape = contact::RigidSurface::Shape::cylinder_solid_inside;
+  double cylinder_error = 0.;
+  for (const auto &[name, surface] :
+       std::vector<std::pair<std::string, contact::RigidSurface>>{
+         {"pin", pin}, {"tube", tube}})
+    {
+      const Run    run = run_block(surface, slope_gravity, 0., 1., 3., comm);
+      const double a   = (run.velocity_2 - run.velocity_1) /
+                       (run.time_2 - run.time_1);
+      const double error = std::abs(a / expected - 1.);
+      cylinder_error     = std::max(cylinder_error, error);
+      out() << name << " of radius " << R << " mm: acceleration " << a
+            << " mm/ms^2, within 2 %: " << (error < 0.02 ? "yes" : "no")
+            << std::endl;
+    }
+  check(cylinder_error < 0.02, "slope on cylinders");
+
   std::cerr << "errors: slope acceleration " << sci(slope_error)
             << ", slope energy " << sci(slope.energy_error) << ", slip "
             << sci(slip_error) << ", stick " << sci(stick_error)
