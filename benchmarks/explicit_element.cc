@@ -23,6 +23,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/yeoh.h>
@@ -70,10 +71,7 @@ main(int argc, char **argv)
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);
-  IndexSet relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-  const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(), relevant, comm);
+  const auto partitioner = rubberdyn::ghosted_partitioner(dof_handler);
 
   const materials::Yeoh<3> rubber(0.55e-3, -0.05e-3, 0.015e-3,
                                   std::array<double, 3>{{1. / 0.331, 0., 0.}},

@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
@@ -411,10 +412,7 @@ namespace rubberdyn
       const FESystem<3> fe(FE_Q<3>(1), 3);
       DoFHandler<3>     dof_handler(triangulation);
       dof_handler.distribute_dofs(fe);
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        dof_handler.locally_owned_dofs(), relevant, comm);
+      const auto partitioner = rubberdyn::ghosted_partitioner(dof_handler);
 
       if (root)
         {

@@ -14,6 +14,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
@@ -68,12 +69,7 @@ namespace bar
       for (const auto &cell : triangulation.active_cell_iterators())
         cell->set_material_id(0);
       dof_handler.distribute_dofs(fe);
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        dof_handler.locally_owned_dofs(),
-        relevant,
-        comm);
+      partitioner = rubberdyn::ghosted_partitioner(dof_handler);
     }
 
     /** Cross-section area (mm^2). */

@@ -31,6 +31,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/elastic.h>
@@ -85,10 +86,7 @@ namespace
     const FESystem<3> fe(FE_Q<3>(1), 3);
     DoFHandler<3>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-      dof_handler.locally_owned_dofs(), relevant, comm);
+    const auto partitioner = rubberdyn::ghosted_partitioner(dof_handler);
 
     const materials::Elastic<3> block(0.05, 0.3, 1e-6);
     elements::SolidHexElements  hexes;

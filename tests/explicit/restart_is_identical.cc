@@ -15,6 +15,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/geometry/standing_cylinder.h>
@@ -45,10 +46,7 @@ namespace
     {
       geometry::make_standing_cylinder(triangulation, 25., 24., refinement);
       dof_handler.distribute_dofs(fe);
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        dof_handler.locally_owned_dofs(), relevant, comm);
+      partitioner = rubberdyn::ghosted_partitioner(dof_handler);
       elements.initialize(dof_handler, partitioner, {{0, &metal}},
                           elements::ElementSettings());
       const Tensor<1, 3> up({0., 0., 1.});

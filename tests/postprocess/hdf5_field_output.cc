@@ -40,6 +40,7 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/postprocess/field_output.h>
 
 #include <array>
@@ -210,12 +211,7 @@ main(int argc, char **argv)
   const FESystem<3> fe(FE_Q<3>(1), 3);
   DoFHandler<3>     dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);
-  IndexSet relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-  const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(),
-    relevant,
-    comm);
+  const auto partitioner = rubberdyn::ghosted_partitioner(dof_handler);
 
   const std::string directory = "fields";
   if (root)
