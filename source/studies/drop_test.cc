@@ -215,6 +215,11 @@ namespace rubberdyn
       bool         echo_history;
       double       checkpoint_interval;
       bool         restart;
+      /**
+       * The model's parameters (all but End time and the Output
+       * subsection) as text: a restart must find the same in its checkpoint.
+       */
+      std::string  model_parameters;
       std::unique_ptr<materials::MaterialModel<3>> rubber;
     };
 
@@ -341,6 +346,36 @@ namespace rubberdyn
     {
       using parameter_tools::require_positive;
       Parameters &p = *parameters;
+      {
+        std::ostringstream all;
+        prm.print_parameters(all, ParameterHandler::ShortPRM);
+        std::istringstream lines(all.str());
+        std::string        line;
+        unsigned int       output_depth = 0;
+        while (std::getline(lines, line))
+          {
+            const auto first = line.find_first_not_of(' ');
+            const std::string text =
+              first == std::string::npos ? "" : line.substr(first);
+            if (output_depth > 0)
+              {
+                if (text.rfind("subsection", 0) == 0)
+                  ++output_depth;
+                else if (text == "end")
+                  --output_depth;
+                continue;
+              }
+            if (text == "subsection Output")
+              {
+                output_depth = 1;
+                continue;
+              }
+            if (text.rfind("set End time", 0) == 0 || text.empty() ||
+                text[0] == '#')
+              continue;
+            p.model_parameters += text + '\n';
+          }
+      }
       prm.enter_subsection("Drop test");
       p.impactor_mass   = prm.get_double("Impactor mass");
       p.impact_velocity = prm.get_double("Impact velocity");
@@ -686,6 +721,7 @@ namespace rubberdyn
                   << "rebounding " << (rebounding ? 1 : 0) << '\n';
             for (const double *value : monitor_state())
               study << *value << '\n';
+            study << "model parameters\n" << p.model_parameters;
             study.close();
             std::filesystem::rename(checkpoint_directory + "/study.txt.new",
                                     checkpoint_directory + "/study.txt");
@@ -708,6 +744,28 @@ namespace rubberdyn
           if (!study)
             throw InputError("Output/Restart from checkpoint",
                              checkpoint_directory + "/study.txt is damaged");
+          std::string line, stored_parameters;
+          std::getline(study, line); // the end of the last number's line
+          std::getline(study, line);
+          if (line != "model parameters")
+            throw InputError("Output/Restart from checkpoint",
+                             checkpoint_directory + "/study.txt is damaged");
+          while (std::getline(study, line))
+            stored_parameters += line + '\n';
+          if (stored_parameters != p.model_parameters)
+            {
+              // Name the first entry that differs.
+              std::istringstream stored(stored_parameters),
+                now(p.model_parameters);
+              std::string a, b;
+              while (std::getline(stored, a) && std::getline(now, b) && a == b)
+                ;
+              throw InputError("Output/Restart from checkpoint",
+                               "the model differs from the checkpoint's ('" +
+                                 b + "' here, '" + a +
+                                 "' there); only End time and the Output "
+                                 "settings may change on a restart");
+            }
           rebounding = (rebounding_flag != 0);
           try
             {
