@@ -50,6 +50,8 @@ namespace rubberdyn
         double                           bulk_viscosity_linear;
         double                           bulk_viscosity_quadratic;
         bool                             fbar;
+        /** kappa of the F-bar volumetric stabilisation (GPa), 0: none. */
+        double                           stabilization_modulus;
       };
 
       RUBBERDYN_VECTOR_CLONES void
@@ -158,6 +160,20 @@ namespace rubberdyn
         // rho0 / J0 the current density (mass scaling included).
         const Lanes bulk_pressure =
           context.density * scaling / J0 * length * Q * rate;
+        // F-bar volumetric stabilisation: U(r) = kappa/2 (r + 1/r - 2) per
+        // unit reference volume, r = J_q / J0 (doc/theory.md, section 8.1);
+        // its Kirchhoff pressure r U'(r) = kappa/2 (r - 1/r) enters the
+        // forces below.
+        const double kappa = context.fbar ? context.stabilization_modulus : 0.;
+        Lanes stabilization_pressure[n_q];
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Lanes r             = J[q] / J0;
+            const Lanes inverse_r     = 1. / r;
+            stabilization_pressure[q] = 0.5 * kappa * (r - inverse_r);
+            element_energy +=
+              load(block.JxW[q]) * (0.5 * kappa * (r + inverse_r - 2.));
+          }
         store(element_energy, result.energy);
         store(bulk_pressure * rate * volume, result.bulk_viscosity_power);
         store(length / (Q + sqrt(Q * Q + c * c)), result.time_step);
@@ -178,7 +194,10 @@ namespace rubberdyn
             A[0][1] = A[1][0] = load(&tau[3 * n_points + q * L]);
             A[0][2] = A[2][0] = load(&tau[4 * n_points + q * L]);
             A[1][2] = A[2][1] = load(&tau[5 * n_points + q * L]);
-            const Lanes third_trace = third * (A[0][0] + A[1][1] + A[2][2]);
+            // (1/3 tr tau - p_stab) replaces 1/3 tr tau: the stabilisation
+            // force is sum_q w_q p_stab (g_a - g0_a).
+            const Lanes third_trace = third * (A[0][0] + A[1][1] + A[2][2]) -
+                                      stabilization_pressure[q];
             const Lanes w           = load(block.JxW[q]);
             S += w * third_trace;
             for (unsigned int r = 0; r < 3; ++r)
@@ -226,6 +245,8 @@ namespace rubberdyn
         {
           context.kernel      = kernels[block.law].get();
           context.density     = laws[block.law]->density();
+          context.stabilization_modulus =
+            settings.fbar_stabilization * laws[block.law]->bulk_modulus();
           context.history_old = history_old.data() + block.history_offset;
           context.history_new = history_new.data() + block.history_offset;
           double scaling[L];

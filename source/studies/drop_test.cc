@@ -208,6 +208,7 @@ namespace rubberdyn
       double       mass_scaling_time_step;
       bool         fbar;
       double       bulk_viscosity_linear, bulk_viscosity_quadratic;
+      double       fbar_stabilization;
       double       penalty_scale;
       std::string  output_directory;
       postprocess::FieldOutput::Format field_output_format;
@@ -283,6 +284,13 @@ namespace rubberdyn
                         "incompressible rubber).");
       prm.declare_entry("Bulk viscosity linear", "0.06", Patterns::Double(0.),
                         "Linear bulk viscosity coefficient (-), LS-DYNA's Q2.");
+      prm.declare_entry("F-bar stabilization", "0", Patterns::Double(0., 1.),
+                        "F-bar only: stiffness beta of the volumetric "
+                        "stabilisation kappa/2 (r + 1/r - 2), r = J_q / J_0, "
+                        "kappa = beta K (-): it resists Gauss-point volume "
+                        "changes at a fixed element-centre volume, which F-bar "
+                        "leaves to the shear stiffness alone (doc/theory.md "
+                        "8.1). 0 switches it off.");
       prm.declare_entry("Bulk viscosity quadratic", "1.5", Patterns::Double(0.),
                         "Quadratic bulk viscosity coefficient (-), LS-DYNA's "
                         "Q1.");
@@ -398,6 +406,7 @@ namespace rubberdyn
       p.fbar = (prm.get("Element formulation") == "F-bar");
       p.bulk_viscosity_linear    = prm.get_double("Bulk viscosity linear");
       p.bulk_viscosity_quadratic = prm.get_double("Bulk viscosity quadratic");
+      p.fbar_stabilization       = prm.get_double("F-bar stabilization");
       prm.leave_subsection();
       require_positive(p.end_time, "Time integration/End time");
       require_positive(p.time_step_scale,
@@ -463,7 +472,8 @@ namespace rubberdyn
         dof_handler, partitioner, {{0, p.rubber.get()}},
         {p.fbar ? elements::Formulation::fbar :
                   elements::Formulation::displacement,
-         p.bulk_viscosity_linear, p.bulk_viscosity_quadratic});
+         p.bulk_viscosity_linear, p.bulk_viscosity_quadratic,
+         p.fbar_stabilization});
       std::vector<double> density_scaling(elements.n_elements(), 1.);
       if (p.mass_scaling_time_step > 0.)
         {

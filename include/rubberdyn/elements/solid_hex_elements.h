@@ -131,6 +131,13 @@ namespace rubberdyn
       double bulk_viscosity_linear = 0.06;
       /** Quadratic bulk viscosity coefficient (LS-DYNA Q1, default 1.5). */
       double bulk_viscosity_quadratic = 1.5;
+      /**
+       * F-bar only: stiffness of the volumetric stabilisation relative to the
+       * law's small-strain bulk modulus, beta in kappa = beta K (-); 0: none.
+       * It resists Gauss-point volume changes at a fixed centre volume,
+       * which F-bar otherwise leaves to the shear stiffness alone.
+       */
+      double fbar_stabilization = 0.;
     };
 
     /**
