@@ -68,16 +68,18 @@ namespace rubberdyn
       const unsigned int group = velocities.size();
       names.push_back(name);
       velocities.push_back(velocity);
-      // A later group overrides an earlier one on a shared dof.
+      // A later group overrides an earlier one on a shared dof (the map
+      // from dof to entry keeps this linear in the number of dofs).
       for (const unsigned int dof : dofs)
         {
-          const auto existing =
-            std::find_if(constrained.begin(), constrained.end(),
-                         [dof](const Entry &e) { return e.dof == dof; });
-          if (existing != constrained.end())
-            existing->group = group;
+          const auto existing = entry_of_dof.find(dof);
+          if (existing != entry_of_dof.end())
+            constrained[existing->second].group = group;
           else
-            constrained.push_back({dof, group});
+            {
+              entry_of_dof[dof] = constrained.size();
+              constrained.push_back({dof, group});
+            }
         }
     }
 

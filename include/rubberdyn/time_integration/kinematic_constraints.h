@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace dealii
@@ -129,6 +130,8 @@ namespace rubberdyn
       std::vector<std::string>                           names;
       std::vector<std::function<double(double)>>         velocities;
       std::vector<Entry>                                 constrained;
+      /** Index in `constrained` of each constrained dof. */
+      std::unordered_map<unsigned int, unsigned int>     entry_of_dof;
     };
   } // namespace time_integration
 } // namespace rubberdyn
