@@ -163,21 +163,6 @@ namespace rubberdyn
         return {values[0], values[1]};
       }
 
-      // The time of the checkpoint in @p output_directory.
-      double
-      read_checkpoint_time(const std::string &output_directory)
-      {
-        const std::string path = output_directory + "/checkpoint/study.txt";
-        std::ifstream     study(path);
-        std::string       key;
-        double            time = -1.;
-        study >> key >> time;
-        if (!study || key != "time")
-          throw InputError("Output/Restart from checkpoint",
-                           "there is no readable checkpoint (" + path + ")");
-        return time;
-      }
-
       // The header and the rows of the CSV file @p path whose first column
       // (the time) is below @p time.
       std::string
@@ -539,26 +524,18 @@ namespace rubberdyn
       std::ofstream history;
       if (root)
         {
-          const std::string path = p.output_directory + "/time_history.csv";
-          if (p.restart)
+          // A restart rewrites the file only once its checkpoint has been
+          // accepted (below), so that a refused restart loses nothing.
+          history << std::setprecision(9);
+          if (!p.restart)
             {
-              // Keep the rows before the checkpoint; the restarted run
-              // writes the rest.
-              const std::string kept =
-                rows_before(path, read_checkpoint_time(p.output_directory));
-              history.open(path);
-              history << kept;
-            }
-          else
-            {
-              history.open(path);
+              history.open(p.output_directory + "/time_history.csv");
               history << "time,time_step,kinetic_energy,internal_energy,"
                          "external_work,contact_work,bulk_viscosity_work,"
                          "added_mass,energy_error,impactor_displacement,"
                          "impactor_force,rubber_top_displacement,"
                          "rubber_bottom_displacement,friction_work\n";
             }
-          history << std::setprecision(9);
         }
       postprocess::FieldOutput fields(p.output_directory,
                                       p.restart ? "solution_restart" :
@@ -745,6 +722,8 @@ namespace rubberdyn
             throw InputError("Output/Restart from checkpoint",
                              "there is no complete checkpoint in " +
                                checkpoint_directory);
+          // "time" and "ranks" are for the reader: load() restores the time
+          // and checks the number of ranks itself.
           std::string  key;
           double       time_value;
           unsigned int ranks, rebounding_flag;
@@ -788,8 +767,17 @@ namespace rubberdyn
                                  ": " + failure.what());
             }
           if (root)
-            log << "  Restarted from the checkpoint at t = " << solver.time()
-                << " ms, step " << solver.step() << std::endl;
+            {
+              // Keep the rows before the checkpoint; the restarted run
+              // writes the rest.
+              const std::string path =
+                p.output_directory + "/time_history.csv";
+              const std::string kept = rows_before(path, solver.time());
+              history.open(path);
+              history << kept;
+              log << "  Restarted from the checkpoint at t = " << solver.time()
+                  << " ms, step " << solver.step() << std::endl;
+            }
         }
 
       bool stopped_after_rebound = false;
