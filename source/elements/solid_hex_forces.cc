@@ -95,6 +95,8 @@ namespace rubberdyn
         // law's layout (point q L + l).
         double F_bar[9 * n_points];
         Lanes  G[n_q][3][3], J[n_q];
+        // J_q / J0: the F-bar scale and the stabilisation's measure.
+        Lanes volume_ratio[n_q];
         Lanes  min_J = J0;
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -103,8 +105,10 @@ namespace rubberdyn
             determinant_and_inverse_transpose(F, J[q], G[q]);
             // NaN-safe minimum: a NaN J makes min_J NaN.
             min_J = (J[q] > min_J) ? min_J : J[q];
-            const Lanes scale =
-              context.fbar ? inverse_cube_root(J[q] / J0) : broadcast(1.);
+            volume_ratio[q] = J[q] / J0;
+            const Lanes scale = context.fbar ?
+                                  inverse_cube_root(volume_ratio[q]) :
+                                  broadcast(1.);
             for (unsigned int r = 0; r < 3; ++r)
               for (unsigned int c = 0; c < 3; ++c)
                 store(scale * F[r][c], &F_bar[(3 * r + c) * n_points + q * L]);
@@ -168,7 +172,7 @@ namespace rubberdyn
         Lanes stabilization_pressure[n_q];
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const Lanes r             = J[q] / J0;
+            const Lanes r             = volume_ratio[q];
             const Lanes inverse_r     = 1. / r;
             stabilization_pressure[q] = 0.5 * kappa * (r - inverse_r);
             element_energy +=
