@@ -137,6 +137,52 @@ namespace bar
   };
 
 
+  /**
+   * The explicit model of a bar: F-bar hexahedra (default element settings)
+   * of one law, penalty contact of the boundaries @p contact_ids with the
+   * rigid @p surfaces (none by default), one rigid body per surface (held:
+   * the caller may give them mass, freedom and velocity before the first
+   * run), and the solver without mass scaling and with default settings.
+   */
+  struct ExplicitBar
+  {
+    ExplicitBar(const Bar &                                      bar,
+                const rubberdyn::materials::MaterialModel<3> &   law,
+                const std::set<types::boundary_id> &             contact_ids = {},
+                const std::vector<rubberdyn::contact::RigidSurface> &surfaces =
+                  {},
+                const double penalty_scale = 1.)
+      : bodies(surfaces.size())
+    {
+      elements.initialize(bar.dof_handler,
+                          bar.partitioner,
+                          {{0, &law}},
+                          rubberdyn::elements::ElementSettings());
+      contact.initialize(bar.dof_handler,
+                         bar.partitioner,
+                         contact_ids,
+                         {law.bulk_modulus()},
+                         penalty_scale,
+                         surfaces);
+      solver = std::make_unique<rubberdyn::time_integration::ExplicitSolver>(
+        bar.dof_handler,
+        elements,
+        contact,
+        bodies,
+        bar.partitioner,
+        std::vector<double>(elements.n_elements(), 1.),
+        rubberdyn::time_integration::ExplicitSettings(),
+        bar.comm);
+    }
+
+    rubberdyn::elements::SolidHexElements                         elements;
+    rubberdyn::contact::RigidSurfaceContact                       contact;
+    std::vector<rubberdyn::time_integration::RigidBody>           bodies;
+    std::unique_ptr<rubberdyn::time_integration::ExplicitSolver> solver;
+  };
+
+
+
   /** Arrival of a wave front at stations along the bar. */
   struct FrontArrivals
   {
@@ -258,15 +304,8 @@ namespace bar
                   const std::vector<double>                    &stations,
                   const double                                  end_time)
   {
-    namespace ti = rubberdyn::time_integration;
-    rubberdyn::elements::SolidHexElements elements;
-    elements.initialize(bar.dof_handler,
-                        bar.partitioner,
-                        {{0, &material}},
-                        rubberdyn::elements::ElementSettings());
-
     const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
-    std::set<types::boundary_id>                ids    = {boundary::z_min};
+    std::set<types::boundary_id>                  ids    = {boundary::z_min};
     std::vector<rubberdyn::contact::RigidSurface> planes = {
       {Point<3>(0., 0., 0.), ez}};
     if (confined)
@@ -279,27 +318,12 @@ namespace bar
         planes.push_back({Point<3>(0., 0., 0.), ey});
         planes.push_back({Point<3>(0., a, 0.), -ey});
       }
-    rubberdyn::contact::RigidSurfaceContact contact;
-    contact.initialize(bar.dof_handler,
-                       bar.partitioner,
-                       ids,
-                       {material.bulk_modulus()},
-                       penalty_scale,
-                       planes);
-
-    std::vector<ti::RigidBody> bodies(planes.size()); // held unless freed
-    bodies[0].mass        = 1e6;
-    bodies[0].free[2]     = true;
-    bodies[0].velocity[2] = v0;
-
-    ti::ExplicitSolver solver(bar.dof_handler,
-                              elements,
-                              contact,
-                              bodies,
-                              bar.partitioner,
-                              std::vector<double>(elements.n_elements(), 1.),
-                              ti::ExplicitSettings(),
-                              bar.comm);
+    ExplicitBar model(bar, material, ids, planes, penalty_scale);
+    // The pusher; the confining planes stay held.
+    model.bodies[0].mass        = 1e6;
+    model.bodies[0].free[2]     = true;
+    model.bodies[0].velocity[2] = v0;
+    auto &solver                = *model.solver;
 
     FrontTracker tracker(bar, stations, v0);
     solver.run(end_time, [&]() { tracker.record(solver); });

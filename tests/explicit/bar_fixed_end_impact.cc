@@ -66,31 +66,12 @@ main(int argc, char **argv)
   const bar::Bar     model(width, n_across, length, n_along, comm);
   const double       h = length / n_along;
 
-  rubberdyn::elements::SolidHexElements elements;
-  elements.initialize(model.dof_handler,
-                      model.partitioner,
-                      {{0, &steel}},
-                      rubberdyn::elements::ElementSettings());
-  rubberdyn::contact::RigidSurfaceContact no_contact;
-  no_contact.initialize(model.dof_handler,
-                        model.partitioner,
-                        {},
-                        {steel.bulk_modulus()},
-                        1.,
-                        {});
-  std::vector<ti::RigidBody> no_bodies;
+  bar::ExplicitBar model_solver(model, steel); // no contact, no bodies
+  ti::ExplicitSolver &solver = *model_solver.solver;
 
   ti::KinematicConstraints constraints(model.dof_handler, model.partitioner);
   constraints.fix("fixed end", bar::boundary::z_min);
 
-  ti::ExplicitSolver solver(model.dof_handler,
-                            elements,
-                            no_contact,
-                            no_bodies,
-                            model.partitioner,
-                            std::vector<double>(elements.n_elements(), 1.),
-                            ti::ExplicitSettings(),
-                            comm);
   solver.set_initial_velocity(Tensor<1, 3>({0., 0., -v0}));
   solver.set_constraints(constraints);
 

@@ -81,19 +81,8 @@ main(int argc, char **argv)
   const unsigned int n_across = 3, n_along = 200;
   const bar::Bar     model(width, n_across, length, n_along, comm);
 
-  rubberdyn::elements::SolidHexElements elements;
-  elements.initialize(model.dof_handler,
-                      model.partitioner,
-                      {{0, &steel}},
-                      rubberdyn::elements::ElementSettings());
-  rubberdyn::contact::RigidSurfaceContact no_contact;
-  no_contact.initialize(model.dof_handler,
-                        model.partitioner,
-                        {},
-                        {steel.bulk_modulus()},
-                        1.,
-                        {});
-  std::vector<ti::RigidBody> no_bodies;
+  bar::ExplicitBar model_solver(model, steel); // no contact, no bodies
+  ti::ExplicitSolver &solver = *model_solver.solver;
 
   ti::KinematicConstraints constraints(model.dof_handler, model.partitioner);
   constraints.symmetry_plane("symmetry x = 0", bar::boundary::x_min, 0);
@@ -106,14 +95,6 @@ main(int argc, char **argv)
                                  [v0](const double) { return v0; });
   const unsigned int x_plane = 0, driver = 4;
 
-  ti::ExplicitSolver solver(model.dof_handler,
-                            elements,
-                            no_contact,
-                            no_bodies,
-                            model.partitioner,
-                            std::vector<double>(elements.n_elements(), 1.),
-                            ti::ExplicitSettings(),
-                            comm);
   solver.set_constraints(constraints);
 
   const std::vector<double> stations = {0.2 * length,

@@ -79,31 +79,16 @@ main(int argc, char **argv)
   const unsigned int n_across = 3, n_along = 300;
   bar::Bar           model(width, n_across, length, n_along, comm);
 
-  rubberdyn::elements::SolidHexElements elements;
-  elements.initialize(model.dof_handler,
-                      model.partitioner,
-                      {{0, &steel}},
-                      rubberdyn::elements::ElementSettings());
-
-  // The wall z = 0, facing the bar's end face, which touches it at t = 0.
-  const double                          penalty_scale = 1.;
-  rubberdyn::contact::RigidSurfaceContact wall;
-  wall.initialize(model.dof_handler,
-                  model.partitioner,
-                  {bar::boundary::z_min},
-                  {steel.bulk_modulus()},
-                  penalty_scale,
-                  {{Point<3>(0., 0., 0.), Tensor<1, 3>({0., 0., 1.})}});
-  std::vector<ti::RigidBody> bodies(1); // mass 0, nothing free: held
-
-  ti::ExplicitSolver solver(model.dof_handler,
-                            elements,
-                            wall,
-                            bodies,
-                            model.partitioner,
-                            std::vector<double>(elements.n_elements(), 1.),
-                            ti::ExplicitSettings(),
-                            comm);
+  // The wall z = 0, facing the bar's end face, which touches it at t = 0;
+  // its body has mass 0 and nothing free: held.
+  const double     penalty_scale = 1.;
+  bar::ExplicitBar model_solver(model,
+                                steel,
+                                {bar::boundary::z_min},
+                                {{Point<3>(0., 0., 0.), Tensor<1, 3>({0., 0., 1.})}},
+                                penalty_scale);
+  ti::ExplicitSolver &solver = *model_solver.solver;
+  const auto         &bodies = model_solver.bodies;
   solver.set_initial_velocity(Tensor<1, 3>({0., 0., -v0}));
 
   // Wall force at every step (the same on every rank: the solver sums the
