@@ -28,6 +28,8 @@
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/yeoh.h>
 #include <rubberdyn/postprocess/field_output.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
 #include <filesystem>
@@ -139,13 +141,19 @@ main(int argc, char **argv)
                     0.1,
                     {{Point<3>(0., 0., 0.), up},
                      {Point<3>(0., 0., 24.), -up}});
-  std::vector<time_integration::RigidBody> bodies(2);
+  std::vector<model::RigidBody> bodies(2);
   bodies[1].mass        = 50.;
   bodies[1].free[2]     = true;
   bodies[1].velocity[2] = -2.;
-  time_integration::ExplicitSolver solver(dof_handler, elements, plates,
-                                          bodies, partitioner, density_scaling,
-                                          {}, comm);
+  elements::SolidHexForces         element_forces(elements, density_scaling);
+  contact::RigidSurfaceForces      plate_forces(plates, {0, 1});
+  time_integration::ExplicitSolver solver(dof_handler,
+                                          {&element_forces, &plate_forces},
+                                          bodies,
+                                          nullptr,
+                                          partitioner,
+                                          {},
+                                          comm);
   const std::vector<double> steps     = elements.reference_time_steps();
   const double              min_step = Utilities::MPI::min(
     *std::min_element(steps.begin(), steps.end()), comm);

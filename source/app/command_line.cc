@@ -6,6 +6,7 @@
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/io/parameter_file.h>
 #include <rubberdyn/materials/yeoh_fit.h>
+#include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/studies/study.h>
 
 #include <fstream>
@@ -36,6 +37,12 @@ namespace rubberdyn
         "                                header 'stretch,nominal_stress [MPa]'\n"
         "                                (Pa, kPa, MPa or GPa); --curves writes\n"
         "                                measured and fitted stresses\n"
+        "  rubberdyn --plot FILE.csv OUT.svg COLUMNS [COLUMNS ...]\n"
+        "                                plot columns of a time history (e.g.\n"
+        "                                time_history.csv) against its first\n"
+        "                                column, as SVG; each COLUMNS is a\n"
+        "                                comma-separated list of column names\n"
+        "                                drawn in one panel\n"
         "  rubberdyn --help              this text\n"
         "\n"
         "Units everywhere: mm, ms, kg, kN, GPa (energy J = kN mm, density\n"
@@ -75,13 +82,17 @@ namespace rubberdyn
       run_study(const std::string &filename)
       {
         dealii::ParameterHandler prm;
-        studies::registry::declare_parameters(prm);
         std::unique_ptr<studies::Study> study;
         try
           {
+            // The names listed in the file first: they name subsections.
+            studies::registry::declare_parameters(
+              prm,
+              filename.empty() ? studies::registry::ListedNames() :
+                                 io::read_listed_names(filename));
             if (!filename.empty())
               io::read_parameter_file(prm, filename);
-            study = studies::registry::create(prm);
+            study = studies::registry::create(prm, filename);
           }
         catch (const InputError &error)
           {
@@ -170,6 +181,44 @@ namespace rubberdyn
           }
         return 0;
       }
+
+
+
+      /**
+       * --plot FILE.csv OUT.svg COLUMNS [COLUMNS ...]: one panel per
+       * comma-separated list of column names.
+       */
+      int
+      plot(const std::vector<std::string> &arguments)
+      {
+        if (arguments.size() < 3)
+          throw InputError("--plot",
+                           "expected FILE.csv OUT.svg COLUMNS [COLUMNS ...]");
+        std::vector<postprocess::PlotPanel> panels;
+        for (unsigned int i = 2; i < arguments.size(); ++i)
+          {
+            postprocess::PlotPanel panel;
+            const std::string     &list = arguments[i];
+            for (std::size_t start = 0; start <= list.size();)
+              {
+                std::size_t comma = list.find(',', start);
+                if (comma == std::string::npos)
+                  comma = list.size();
+                if (comma > start)
+                  panel.columns.push_back(list.substr(start, comma - start));
+                start = comma + 1;
+              }
+            panels.push_back(panel);
+          }
+        if (is_root())
+          {
+            postprocess::write_time_history_plot(arguments[0],
+                                                 arguments[1],
+                                                 panels);
+            std::cout << "Wrote " << arguments[1] << "\n";
+          }
+        return 0;
+      }
     } // namespace
 
 
@@ -198,6 +247,8 @@ namespace rubberdyn
             return print_parameters();
           if (arguments[0] == "--fit-yeoh")
             return fit_yeoh({arguments.begin() + 1, arguments.end()});
+          if (arguments[0] == "--plot")
+            return plot({arguments.begin() + 1, arguments.end()});
           if (arguments[0].rfind("-", 0) == 0 || arguments.size() > 1)
             {
               report_error("unknown option or extra argument in '" +

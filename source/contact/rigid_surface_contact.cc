@@ -163,8 +163,10 @@ namespace rubberdyn
       result.force_on_plane.assign(n_surfaces, Tensor<1, 3>());
       result.penalty_energy       = 0.;
       result.friction_dissipation = 0.;
+      n_touched.resize(nodes.size());
       for (unsigned int n = 0; n < nodes.size(); ++n)
         {
+          n_touched[n] = 0;
           const Node &node = nodes[n];
           Point<3>    x    = node.X;
           for (unsigned int d = 0; d < 3; ++d)
@@ -193,6 +195,7 @@ namespace rubberdyn
                   continue;
                 }
 
+              ++n_touched[n];
               const double normal_force = -node.stiffness * gap; // > 0
               Tensor<1, 3> force        = normal_force * normal;
               result.penalty_energy += 0.5 * node.stiffness * gap * gap;
@@ -243,11 +246,17 @@ namespace rubberdyn
     double
     RigidSurfaceContact::stable_time_step(const VectorType &mass) const
     {
+      // A node pressed on several surfaces at once (a corner between two
+      // plates) hangs on the sum of their springs.
       double step = std::numeric_limits<double>::max();
-      for (const Node &node : nodes)
-        step = std::min(step,
-                        2. * std::sqrt(mass.local_element(node.dofs[2]) /
-                                       node.stiffness));
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+        {
+          const double springs =
+            n < n_touched.size() ? std::max<double>(1., n_touched[n]) : 1.;
+          step = std::min(step,
+                          2. * std::sqrt(mass.local_element(nodes[n].dofs[2]) /
+                                         (springs * nodes[n].stiffness)));
+        }
       return step;
     }
 

@@ -7,6 +7,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/io/parameter_file.h>
 
+#include <cctype>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -210,6 +211,88 @@ namespace rubberdyn
                            parse_error_message(filename,
                                                message_of(exception)));
         }
+    }
+
+
+
+    namespace
+    {
+      std::string
+      trim(const std::string &text)
+      {
+        const auto first = text.find_first_not_of(" \t\r");
+        if (first == std::string::npos)
+          return "";
+        const auto last = text.find_last_not_of(" \t\r");
+        return text.substr(first, last - first + 1);
+      }
+    } // namespace
+
+
+
+    std::map<std::string, std::vector<std::string>>
+    read_listed_names(const std::string &filename)
+    {
+      std::map<std::string, std::vector<std::string>> result;
+      std::ifstream file(filename);
+      if (!file)
+        return result;
+      std::vector<std::string> path;
+      std::string              line, logical;
+      while (std::getline(file, line))
+        {
+          // Continuation lines end in a backslash.
+          if (!line.empty() && line.back() == '\\')
+            {
+              logical += line.substr(0, line.size() - 1);
+              continue;
+            }
+          logical += line;
+          std::string text = trim(logical.substr(0, logical.find('#')));
+          logical.clear();
+          if (text.rfind("subsection ", 0) == 0)
+            path.push_back(trim(text.substr(11)));
+          else if (text == "end")
+            {
+              if (!path.empty())
+                path.pop_back();
+            }
+          else if (text.rfind("set ", 0) == 0)
+            {
+              const auto equals = text.find('=');
+              if (equals == std::string::npos ||
+                  trim(text.substr(4, equals - 4)) != "Names")
+                continue;
+              std::string where;
+              for (const std::string &name : path)
+                where += (where.empty() ? "" : "/") + name;
+              std::vector<std::string> names;
+              std::istringstream       list(text.substr(equals + 1));
+              std::string              name;
+              while (std::getline(list, name, ','))
+                {
+                  name = trim(name);
+                  if (name.empty())
+                    continue;
+                  for (const char c : name)
+                    if (!(std::isalnum(static_cast<unsigned char>(c)) ||
+                          c == '_' || c == '-'))
+                      throw InputError(where + "/Names",
+                                       "the name '" + name.substr(0, 40) +
+                                         "' may hold only letters, digits, "
+                                         "'_' and '-' (it names output "
+                                         "columns)");
+                  for (const std::string &other : names)
+                    if (other == name)
+                      throw InputError(where + "/Names",
+                                       "the name '" + name +
+                                         "' is used twice");
+                  names.push_back(name);
+                }
+              result[where] = names;
+            }
+        }
+      return result;
     }
 
 

@@ -19,7 +19,8 @@ namespace rubberdyn
     namespace hd = materials::homogeneous_deformation;
 
     void
-    MaterialPoint::declare_parameters(dealii::ParameterHandler &prm)
+    MaterialPoint::declare_parameters(dealii::ParameterHandler &prm,
+                                     const registry::ListedNames &)
     {
       prm.enter_subsection("Material point");
       prm.declare_entry(

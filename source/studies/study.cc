@@ -1,7 +1,12 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/parameters/contact_parameters.h>
+#include <rubberdyn/parameters/output_parameters.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/studies/study.h>
+
+#include <ostream>
 
 #include <map>
 #include <sstream>
@@ -10,6 +15,14 @@ namespace rubberdyn
 {
   namespace studies
   {
+    void
+    Study::check(std::ostream &log)
+    {
+      log << "The parameters are valid." << std::endl;
+    }
+
+
+
     namespace registry
     {
       namespace
@@ -54,7 +67,7 @@ namespace rubberdyn
 
 
       void
-      declare_parameters(dealii::ParameterHandler &prm)
+      declare_parameters(dealii::ParameterHandler &prm, const ListedNames &names)
       {
         std::ostringstream doc;
         std::string        pattern;
@@ -65,33 +78,28 @@ namespace rubberdyn
             pattern += (pattern.empty() ? "" : "|") + entry.first;
           }
         prm.declare_entry("Study",
-                          "Material point",
+                          "Drop test",
                           dealii::Patterns::Selection(pattern),
                           doc.str());
 
-        prm.enter_subsection("Output");
-        prm.declare_entry("Output directory",
-                          "output",
-                          dealii::Patterns::DirectoryName(),
-                          "Directory for all results; created if missing. "
-                          "Relative paths are relative to the working "
-                          "directory.");
-        prm.leave_subsection();
+        parameters::TimeIntegration::declare_parameters(prm);
+        parameters::Contact::declare_parameters(prm);
+        parameters::Output::declare_parameters(prm);
 
         for (const auto &entry : entries())
-          entry.second.declare(prm);
+          entry.second.declare(prm, names);
       }
 
 
 
       std::unique_ptr<Study>
-      create(dealii::ParameterHandler &prm)
+      create(dealii::ParameterHandler &prm, const std::string &parameter_file)
       {
         const std::string name = prm.get("Study");
         const auto        it   = entries().find(name);
         if (it == entries().end())
           throw InputError("Study", "unknown study '" + name + "'");
-        return it->second.create(prm);
+        return it->second.create(prm, parameter_file);
       }
     } // namespace registry
   }   // namespace studies

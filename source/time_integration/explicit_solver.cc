@@ -2,14 +2,15 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 
+#include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
 #include <istream>
 #include <ostream>
-#include <iomanip>
 #include <sstream>
 
 namespace rubberdyn
@@ -29,6 +30,15 @@ namespace rubberdyn
 
 
     double
+    EnergyBalance::absolute_error() const
+    {
+      return std::abs(kinetic + internal + contact + bulk_viscosity_work +
+                      friction_work - initial - external_work);
+    }
+
+
+
+    double
     EnergyBalance::current_scale() const
     {
       return std::max(std::abs(kinetic) + std::abs(internal) +
@@ -41,27 +51,29 @@ namespace rubberdyn
 
     ExplicitSolver::ExplicitSolver(
       const DoFHandler<3, 3> &                                   dof_handler,
-      elements::SolidHexElements &                               elements,
-      contact::RigidSurfaceContact &                               contact,
+      const std::vector<model::ForceContribution *> &            contributions,
       std::vector<RigidBody> &                                   bodies,
+      const KinematicConstraints *                               constraints,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      const std::vector<double> &                                density_scaling,
       const ExplicitSettings &                                   settings,
       const MPI_Comm                                             comm)
-      : elements(elements)
-      , contact(contact)
+      : contributions(contributions)
       , bodies(bodies)
+      , constraints(constraints)
       , partitioner(partitioner)
-      , density_scaling(density_scaling)
       , settings(settings)
       , comm(comm)
+      , group_internal_energy(settings.n_groups, 0.)
+      , group_motion(settings.n_groups)
     {
       for (VectorType *vector :
            {&u, &v, &f, &mass, &inverse_mass, &gravity_force})
         vector->reinit(partitioner);
 
-      // Direction of every locally owned dof.
-      dof_component.resize(partitioner->locally_owned_size());
+      // Direction and reference coordinate of every locally owned dof.
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      dof_component.resize(n_owned);
+      dof_coordinate.resize(n_owned);
       const FiniteElement<3> &   fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -70,20 +82,28 @@ namespace rubberdyn
             cell->get_dof_indices(dof_indices);
             for (unsigned int i = 0; i < dof_indices.size(); ++i)
               if (partitioner->in_local_range(dof_indices[i]))
-                dof_component[partitioner->global_to_local(dof_indices[i])] =
-                  fe.system_to_component_index(i).first;
+                {
+                  const unsigned int local =
+                    partitioner->global_to_local(dof_indices[i]);
+                  const auto component_and_vertex =
+                    fe.system_to_component_index(i);
+                  dof_component[local] = component_and_vertex.first;
+                  dof_coordinate[local] =
+                    cell->vertex(component_and_vertex.second)
+                                [component_and_vertex.first];
+                }
           }
+      dof_group.assign(n_owned, 0);
 
       // Lumped mass with and without mass scaling; gravity acts on the
       // physical mass only (added mass is a numerical device, not weight).
       VectorType physical_mass(partitioner);
-      elements.add_lumped_mass(mass, density_scaling);
-      elements.add_lumped_mass(physical_mass,
-                               std::vector<double>(density_scaling.size(), 1.));
+      for (const model::ForceContribution *contribution : contributions)
+        contribution->add_lumped_mass(mass, physical_mass);
       mass.compress(VectorOperation::add);
       physical_mass.compress(VectorOperation::add);
       double masses[2] = {0., 0.};
-      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      for (unsigned int i = 0; i < n_owned; ++i)
         {
           inverse_mass.local_element(i) = 1. / mass.local_element(i);
           gravity_force.local_element(i) =
@@ -97,6 +117,20 @@ namespace rubberdyn
                           ArrayView<double>(masses, 2));
       total_physical_mass = masses[0];
       total_added_mass    = masses[1] - masses[0];
+      if (constraints != nullptr)
+        {
+          reaction.assign(constraints->n_groups(), 0.);
+          reaction_moment.assign(constraints->n_groups(), Tensor<1, 3>());
+        }
+      // Every body's initial velocity in its prescribed directions.
+      for (RigidBody &body : bodies)
+        if (body.prescribed_velocity)
+          {
+            const Tensor<1, 3> prescribed = body.prescribed_velocity(0.);
+            for (unsigned int d = 0; d < 3; ++d)
+              if (!body.moves_freely(d))
+                body.velocity[d] = prescribed[d];
+          }
     }
 
 
@@ -112,49 +146,62 @@ namespace rubberdyn
 
 
     void
-    ExplicitSolver::set_constraints(const KinematicConstraints &constraints_in)
+    ExplicitSolver::set_initial_velocity(const VectorType &velocity)
     {
-      constraints = &constraints_in;
-      reaction.assign(constraints->n_groups(), 0.);
-      for (const KinematicConstraints::Entry &entry : constraints->entries())
-        v.local_element(entry.dof) =
-          constraints->velocity(entry.group, current_time);
+      AssertThrow(!started, ExcMessage("initial velocity after the start"));
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        v.local_element(i) = velocity.local_element(i);
       v.update_ghost_values();
+    }
+
+
+
+    void
+    ExplicitSolver::set_group_masses(const std::vector<VectorType> &group_mass)
+    {
+      AssertThrow(group_mass.size() == settings.n_groups,
+                  ExcDimensionMismatch(group_mass.size(), settings.n_groups));
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      shared_dofs.clear();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          unsigned int n_present = 0, last = 0;
+          for (unsigned int g = 0; g < settings.n_groups; ++g)
+            if (group_mass[g].local_element(i) > 0.)
+              {
+                ++n_present;
+                last = g;
+              }
+          if (n_present == 1)
+            dof_group[i] = last;
+          else
+            {
+              // Shared by several groups (or by none, e.g. a node of a
+              // rigid part): split by the groups' masses.
+              dof_group[i] = settings.n_groups;
+              SharedDof shared{i, std::vector<double>(settings.n_groups)};
+              double    total = 0.;
+              for (unsigned int g = 0; g < settings.n_groups; ++g)
+                total += group_mass[g].local_element(i);
+              // In proportion to the groups' physical masses, of the
+              // node's (possibly scaled) mass.
+              for (unsigned int g = 0; g < settings.n_groups; ++g)
+                shared.mass_by_group[g] =
+                  total > 0. ? mass.local_element(i) *
+                                 group_mass[g].local_element(i) / total :
+                               0.;
+              shared_dofs.push_back(shared);
+            }
+        }
     }
 
 
 
     namespace
     {
-      constexpr char         checkpoint_magic[8] = "RDYNCK1";
-      constexpr unsigned int checkpoint_version  = 1;
-
-      void
-      write_doubles(std::ostream &out, const double *data, const std::size_t n)
-      {
-        const std::uint64_t size = n;
-        out.write(reinterpret_cast<const char *>(&size), sizeof(size));
-        out.write(reinterpret_cast<const char *>(data), n * sizeof(double));
-      }
-
-      // Read n doubles written by write_doubles(); @p what names them in
-      // the error message if the stored size differs.
-      void
-      read_doubles(std::istream &     in,
-                   double *           data,
-                   const std::size_t  n,
-                   const std::string &what)
-      {
-        std::uint64_t size = 0;
-        in.read(reinterpret_cast<char *>(&size), sizeof(size));
-        if (!in || size != n)
-          throw SolverFailure("the checkpoint does not fit this model: it has " +
-                              std::to_string(size) + " values of " + what +
-                              ", the model " + std::to_string(n));
-        in.read(reinterpret_cast<char *>(data), n * sizeof(double));
-        if (!in)
-          throw SolverFailure("the checkpoint ends early (in " + what + ")");
-      }
+      constexpr char         checkpoint_magic[8] = "RDYNCK2";
+      constexpr unsigned int checkpoint_version  = 2;
+      constexpr unsigned int n_scalars           = 15;
     } // namespace
 
 
@@ -162,26 +209,27 @@ namespace rubberdyn
     void
     ExplicitSolver::save(std::ostream &out) const
     {
+      using binary_io::write_doubles;
       out.write(checkpoint_magic, sizeof(checkpoint_magic));
       const unsigned int header[2] = {checkpoint_version,
                                       Utilities::MPI::n_mpi_processes(comm)};
       out.write(reinterpret_cast<const char *>(header), sizeof(header));
-      const double scalars[15] = {current_time,
-                                  last_time_step,
-                                  double(step_number),
-                                  started ? 1. : 0.,
-                                  gravity_work_increment,
-                                  energy.kinetic,
-                                  energy.internal,
-                                  energy.external_work,
-                                  energy.contact,
-                                  energy.bulk_viscosity_work,
-                                  energy.friction_work,
-                                  energy.initial,
-                                  energy.largest_energy,
-                                  double(bodies.size()),
-                                  constraint_work_ahead};
-      write_doubles(out, scalars, 15);
+      const double scalars[n_scalars] = {current_time,
+                                         last_time_step,
+                                         double(step_number),
+                                         started ? 1. : 0.,
+                                         gravity_work_increment,
+                                         energy.kinetic,
+                                         energy.internal,
+                                         energy.external_work,
+                                         energy.contact,
+                                         energy.bulk_viscosity_work,
+                                         energy.friction_work,
+                                         energy.initial,
+                                         energy.largest_energy,
+                                         double(bodies.size()),
+                                         constraint_work_ahead};
+      write_doubles(out, scalars, n_scalars);
       const unsigned int n_owned = partitioner->locally_owned_size();
       write_doubles(out, u.begin(), n_owned);
       write_doubles(out, v.begin(), n_owned);
@@ -197,10 +245,21 @@ namespace rubberdyn
           write_doubles(out, values, 9);
         }
       write_doubles(out, reaction.data(), reaction.size());
-      const std::vector<double> &history = elements.history();
-      write_doubles(out, history.data(), history.size());
-      const std::vector<double> &friction = contact.state();
-      write_doubles(out, friction.data(), friction.size());
+      std::vector<double> moments;
+      for (const Tensor<1, 3> &m : reaction_moment)
+        for (unsigned int d = 0; d < 3; ++d)
+          moments.push_back(m[d]);
+      write_doubles(out, moments.data(), moments.size());
+      std::vector<double> by_group = group_internal_energy;
+      for (const GroupMotion &motion : group_motion)
+        {
+          by_group.push_back(motion.kinetic_energy);
+          for (unsigned int d = 0; d < 3; ++d)
+            by_group.push_back(motion.momentum[d]);
+        }
+      write_doubles(out, by_group.data(), by_group.size());
+      for (const model::ForceContribution *contribution : contributions)
+        contribution->save(out);
       if (!out)
         throw SolverFailure("writing the checkpoint failed");
     }
@@ -210,61 +269,84 @@ namespace rubberdyn
     void
     ExplicitSolver::load(std::istream &in)
     {
-      char magic[sizeof(checkpoint_magic)] = {};
-      in.read(magic, sizeof(magic));
-      if (!in || std::string(magic) != checkpoint_magic)
-        throw SolverFailure("not a rubberdyn checkpoint");
-      unsigned int header[2] = {0, 0};
-      in.read(reinterpret_cast<char *>(header), sizeof(header));
-      if (header[0] != checkpoint_version)
-        throw SolverFailure("checkpoint version " + std::to_string(header[0]) +
-                            " is not " + std::to_string(checkpoint_version));
-      if (header[1] != Utilities::MPI::n_mpi_processes(comm))
-        throw SolverFailure("the checkpoint was written by " +
-                            std::to_string(header[1]) +
-                            " ranks; restart with as many");
-      double scalars[15];
-      read_doubles(in, scalars, 15, "scalars");
-      if (static_cast<unsigned int>(scalars[13]) != bodies.size())
-        throw SolverFailure("the checkpoint has " +
-                            std::to_string(int(scalars[13])) +
-                            " rigid bodies, the model " +
-                            std::to_string(bodies.size()));
-      current_time               = scalars[0];
-      last_time_step             = scalars[1];
-      step_number                = static_cast<unsigned int>(scalars[2]);
-      started                    = scalars[3] != 0.;
-      gravity_work_increment     = scalars[4];
-      energy.kinetic             = scalars[5];
-      energy.internal            = scalars[6];
-      energy.external_work       = scalars[7];
-      energy.contact             = scalars[8];
-      energy.bulk_viscosity_work = scalars[9];
-      energy.friction_work       = scalars[10];
-      energy.initial             = scalars[11];
-      energy.largest_energy      = scalars[12];
-      constraint_work_ahead      = scalars[14];
-      const unsigned int n_owned = partitioner->locally_owned_size();
-      read_doubles(in, u.begin(), n_owned, "displacements");
-      read_doubles(in, v.begin(), n_owned, "velocities");
-      u.update_ghost_values();
-      v.update_ghost_values();
-      for (RigidBody &body : bodies)
+      using binary_io::read_doubles;
+      try
         {
-          double values[9];
-          read_doubles(in, values, 9, "rigid-body values");
-          for (unsigned int d = 0; d < 3; ++d)
+          char magic[sizeof(checkpoint_magic)] = {};
+          in.read(magic, sizeof(magic));
+          if (!in || std::string(magic, sizeof(magic) - 1) !=
+                       std::string(checkpoint_magic, sizeof(magic) - 1))
+            throw SolverFailure("not a rubberdyn checkpoint of this version");
+          unsigned int header[2] = {0, 0};
+          in.read(reinterpret_cast<char *>(header), sizeof(header));
+          if (header[0] != checkpoint_version)
+            throw SolverFailure("checkpoint version " +
+                                std::to_string(header[0]) + " is not " +
+                                std::to_string(checkpoint_version));
+          if (header[1] != Utilities::MPI::n_mpi_processes(comm))
+            throw SolverFailure("the checkpoint was written by " +
+                                std::to_string(header[1]) +
+                                " ranks; restart with as many");
+          double scalars[n_scalars];
+          read_doubles(in, scalars, n_scalars, "scalars");
+          if (static_cast<unsigned int>(scalars[13]) != bodies.size())
+            throw SolverFailure("the checkpoint has " +
+                                std::to_string(int(scalars[13])) +
+                                " rigid bodies, the model " +
+                                std::to_string(bodies.size()));
+          current_time               = scalars[0];
+          last_time_step             = scalars[1];
+          step_number                = static_cast<unsigned int>(scalars[2]);
+          started                    = scalars[3] != 0.;
+          gravity_work_increment     = scalars[4];
+          energy.kinetic             = scalars[5];
+          energy.internal            = scalars[6];
+          energy.external_work       = scalars[7];
+          energy.contact             = scalars[8];
+          energy.bulk_viscosity_work = scalars[9];
+          energy.friction_work       = scalars[10];
+          energy.initial             = scalars[11];
+          energy.largest_energy      = scalars[12];
+          constraint_work_ahead      = scalars[14];
+          const unsigned int n_owned = partitioner->locally_owned_size();
+          read_doubles(in, u.begin(), n_owned, "displacements");
+          read_doubles(in, v.begin(), n_owned, "velocities");
+          u.update_ghost_values();
+          v.update_ghost_values();
+          for (RigidBody &body : bodies)
             {
-              body.displacement[d]  = values[d];
-              body.velocity[d]      = values[3 + d];
-              body.contact_force[d] = values[6 + d];
+              double values[9];
+              read_doubles(in, values, 9, "rigid-body values");
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  body.displacement[d]  = values[d];
+                  body.velocity[d]      = values[3 + d];
+                  body.contact_force[d] = values[6 + d];
+                }
             }
+          read_doubles(in, reaction.data(), reaction.size(), "reactions");
+          std::vector<double> moments(3 * reaction_moment.size());
+          read_doubles(in, moments.data(), moments.size(), "reaction moments");
+          for (unsigned int g = 0; g < reaction_moment.size(); ++g)
+            for (unsigned int d = 0; d < 3; ++d)
+              reaction_moment[g][d] = moments[3 * g + d];
+          std::vector<double> by_group(5 * settings.n_groups);
+          read_doubles(in, by_group.data(), by_group.size(), "part energies");
+          for (unsigned int g = 0; g < settings.n_groups; ++g)
+            {
+              group_internal_energy[g]       = by_group[g];
+              group_motion[g].kinetic_energy = by_group[settings.n_groups + 4 * g];
+              for (unsigned int d = 0; d < 3; ++d)
+                group_motion[g].momentum[d] =
+                  by_group[settings.n_groups + 4 * g + 1 + d];
+            }
+          for (model::ForceContribution *contribution : contributions)
+            contribution->load(in);
         }
-      read_doubles(in, reaction.data(), reaction.size(), "reactions");
-      std::vector<double> &history = elements.history();
-      read_doubles(in, history.data(), history.size(), "material history");
-      std::vector<double> &friction = contact.state();
-      read_doubles(in, friction.data(), friction.size(), "contact state");
+      catch (const CheckpointError &error)
+        {
+          throw SolverFailure(error.what());
+        }
     }
 
 
@@ -293,13 +375,52 @@ namespace rubberdyn
 
 
     void
+    ExplicitSolver::evaluate_forces()
+    {
+      const unsigned int n_groups = settings.n_groups;
+      results.reset(n_groups, bodies.size());
+      const model::EvaluationPoint point{u, v, mass, bodies, current_time};
+      f = 0.;
+      auto clock = std::chrono::steady_clock::now();
+      // Internal forces first (owned and ghost entries), then compress and
+      // turn them into forces on the solid, then the external forces.
+      for (model::ForceContribution *contribution : contributions)
+        if (contribution->accumulation() ==
+            model::ForceContribution::Accumulation::internal_ghosted)
+          contribution->add_forces(point, f, results);
+      timing.element_forces += lap(clock);
+      f.compress(VectorOperation::add);
+      timing.communication += lap(clock);
+      f *= -1.;
+      f += gravity_force;
+      for (model::ForceContribution *contribution : contributions)
+        if (contribution->accumulation() ==
+            model::ForceContribution::Accumulation::external_owned)
+          contribution->add_forces(point, f, results);
+      timing.contact += lap(clock);
+    }
+
+
+
+    void
     ExplicitSolver::run(const double end_time, const std::function<void()> &monitor)
     {
       const unsigned int n_owned  = partitioner->locally_owned_size();
       const unsigned int n_bodies = bodies.size();
-      const unsigned int n_groups = constraints ? constraints->n_groups() : 0;
+      const unsigned int n_cgroups = constraints ? constraints->n_groups() : 0;
+      const unsigned int n_groups  = settings.n_groups;
       if (!started)
         {
+          // The constrained dofs start with their prescribed velocity (a
+          // loaded checkpoint has started and keeps its own).
+          if (constraints != nullptr)
+            {
+              for (const KinematicConstraints::Entry &entry :
+                   constraints->entries())
+                v.local_element(entry.dof) =
+                  constraints->initial_velocity(entry);
+              v.update_ghost_values();
+            }
           // Initial energy: kinetic energy of the initial velocities.
           double local = 0.;
           for (unsigned int i = 0; i < n_owned; ++i)
@@ -310,52 +431,47 @@ namespace rubberdyn
             energy.initial += 0.5 * body.mass * body.velocity.norm_square();
         }
 
-      std::vector<Tensor<1, 3>> plane_displacement(n_bodies);
       // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
       // work, the constraints' work up to t_n and their work at t_n that
-      // belongs to t_{n+1}, friction work, then the body forces and the
-      // reactions.
-      constexpr unsigned int n_energy_sums = 8;
-      std::vector<double> sums(n_energy_sums + 3 * n_bodies + n_groups);
-      std::vector<double> local_reaction(n_groups);
+      // belongs to t_{n+1}, friction work, the contributions' external
+      // work, the prescribed bodies' work, then the body forces, the
+      // reactions and their moments, and per group the internal energy,
+      // kinetic energy and momentum.
+      constexpr unsigned int n_energy_sums = 10;
+      const unsigned int     body_offset   = n_energy_sums;
+      const unsigned int     reaction_offset = body_offset + 3 * n_bodies;
+      const unsigned int     moment_offset   = reaction_offset + n_cgroups;
+      const unsigned int     group_offset    = moment_offset + 3 * n_cgroups;
+      std::vector<double> sums(group_offset + 5 * n_groups);
+      std::vector<double> local_reaction(4 * n_cgroups);
+      std::vector<double> shared_velocity(shared_dofs.size());
+      // Kinetic energy and momentum per group, plus one bucket for the
+      // shared dofs (distributed by mass afterwards).
+      std::vector<double> group_kinetic(n_groups + 1), group_momentum(3 * (n_groups + 1));
+      double minima[2];
       auto                clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
-          // Forces at u^n: -f_int + f_contact + f_gravity.
-          f = 0.;
-          elements::ElementStepResult element_result;
-          elements.compute_forces(u, v, density_scaling, f, element_result);
-          timing.element_forces += lap(clock);
-          f.compress(VectorOperation::add);
-          timing.communication += lap(clock);
-          f *= -1.;
-          f += gravity_force;
-          for (unsigned int b = 0; b < n_bodies; ++b)
-            plane_displacement[b] = bodies[b].displacement;
-          contact::ContactResult contact_result;
-          contact.add_forces(u, plane_displacement, f, contact_result);
-          const double contact_step = contact.stable_time_step(mass);
-          timing.contact += lap(clock);
+          // Forces at u^n: -f_int + f_contact + f_gravity + loads.
+          lap(clock);
+          evaluate_forces();
+          clock = std::chrono::steady_clock::now();
 
-          // Collective 1: the stable step (negative: an element failed).
-          // Elements and penalty springs act in parallel on contact nodes.
-          double local_step =
-            1. / std::sqrt(1. / (element_result.min_time_step *
-                                 element_result.min_time_step) +
-                           1. / (contact_step * contact_step));
-          if (element_result.failure.failed)
-            local_step = -1.;
-          const double stable_step = Utilities::MPI::min(local_step, comm);
+          // Collective 1: the smallest element and contact steps of the
+          // whole model (a failed element: a negative element step), then
+          // combined: elements and penalty springs act in parallel on
+          // contact nodes.
+          minima[0] =
+            results.failure.failed ? -1. : results.element_time_step;
+          minima[1] = results.contact_time_step;
+          Utilities::MPI::min(ArrayView<const double>(minima, 2),
+                              comm,
+                              ArrayView<double>(minima, 2));
           timing.communication += lap(clock);
-          if (stable_step < 0.)
+          if (minima[0] < 0.)
             {
-              std::ostringstream message;
-              if (element_result.failure.failed)
-                message << "element " << element_result.failure.cell_id
-                        << " at (" << element_result.failure.position
-                        << ") mm failed: " << element_result.failure.message;
               const std::vector<std::string> messages =
-                Utilities::MPI::all_gather(comm, message.str());
+                Utilities::MPI::all_gather(comm, results.failure.message);
               std::string text;
               for (const std::string &m : messages)
                 if (!m.empty() && text.empty())
@@ -363,6 +479,9 @@ namespace rubberdyn
               throw SolverFailure(text + ", at time " + number(current_time) +
                                   " ms, step " + std::to_string(step_number));
             }
+          const double stable_step =
+            1. / std::sqrt(1. / (minima[0] * minima[0]) +
+                           1. / (minima[1] * minima[1]));
           const double new_step = settings.time_step_scale * stable_step;
           if (new_step < settings.minimum_time_step)
             throw SolverFailure("the stable time step " + number(new_step) +
@@ -374,16 +493,30 @@ namespace rubberdyn
             started ? 0.5 * (last_time_step + new_step) : 0.5 * new_step;
 
           // Velocities of the solid to the next half step; kinetic energy
-          // at t_n from the mean of the half-step velocities.
+          // at t_n from the mean of the half-step velocities, per group; at
+          // t_0 from the initial velocity itself (the velocity at t_0 is
+          // known there, and the work that leads to v^{1/2} is booked at
+          // t_1). The weights are powers of two: 1/8 m (a + b)^2 and
+          // 1/2 m (a/2 + b/2)^2 are the same to the last bit.
+          const double w_old = started ? 0.5 : 1., w_new = started ? 0.5 : 0.;
           double kinetic = 0.;
+          std::fill(group_kinetic.begin(), group_kinetic.end(), 0.);
+          std::fill(group_momentum.begin(), group_momentum.end(), 0.);
+          for (unsigned int k = 0; k < shared_dofs.size(); ++k)
+            shared_velocity[k] = v.local_element(shared_dofs[k].dof);
           for (unsigned int i = 0; i < n_owned; ++i)
             {
               const double v_old = v.local_element(i);
               const double v_new =
                 v_old + average_step * inverse_mass.local_element(i) *
                           f.local_element(i);
-              kinetic += 0.125 * mass.local_element(i) * (v_old + v_new) *
-                         (v_old + v_new);
+              const double m = mass.local_element(i);
+              const unsigned int g = dof_group[i];
+              const double v_mean    = w_old * v_old + w_new * v_new;
+              const double kinetic_i = 0.5 * m * v_mean * v_mean;
+              kinetic += kinetic_i;
+              group_kinetic[g] += kinetic_i;
+              group_momentum[3 * g + dof_component[i]] += m * v_mean;
               v.local_element(i) = v_new;
             }
           // Prescribed velocities at t_{n+1/2}, their reactions and work
@@ -399,7 +532,7 @@ namespace rubberdyn
           std::fill(local_reaction.begin(), local_reaction.end(), 0.);
           if (constraints != nullptr)
             {
-              const double half_step_time = current_time + 0.5 * new_step;
+              constraints->begin_step(current_time, new_step);
               for (const KinematicConstraints::Entry &entry :
                    constraints->entries())
                 {
@@ -410,10 +543,24 @@ namespace rubberdyn
                     v_free - average_step * inverse_mass.local_element(i) *
                                f.local_element(i);
                   const double v_new =
-                    constraints->velocity(entry.group, half_step_time);
+                    constraints->half_step_velocity(entry, u.local_element(i));
                   const double r =
                     m * (v_new - v_old) / average_step - f.local_element(i);
                   local_reaction[entry.group] += r;
+                  // Moment about the group's point, current position.
+                  {
+                    Tensor<1, 3> arm;
+                    for (unsigned int d = 0; d < 3; ++d)
+                      arm[d] = entry.X[d] +
+                               u.local_element(entry.node_dofs[d]) -
+                               constraints->moment_point(entry.group)[d];
+                    Tensor<1, 3> force;
+                    force[dof_component[i]] = r;
+                    const Tensor<1, 3> moment = cross_product_3d(arm, force);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      local_reaction[n_cgroups + 3 * entry.group + d] +=
+                        moment[d];
+                  }
                   if (started)
                     {
                       constraint_work += 0.5 * r * v_old * last_time_step;
@@ -422,30 +569,59 @@ namespace rubberdyn
                   else
                     constraint_work_next +=
                       r * 0.5 * (v_old + v_new) * average_step;
-                  kinetic += 0.125 * m *
-                             ((v_old + v_new) * (v_old + v_new) -
-                              (v_old + v_free) * (v_old + v_free));
+                  const unsigned int g = dof_group[i];
+                  const double mean_new  = w_old * v_old + w_new * v_new;
+                  const double mean_free = w_old * v_old + w_new * v_free;
+                  const double correction =
+                    0.5 * m *
+                    (mean_new * mean_new - mean_free * mean_free);
+                  kinetic += correction;
+                  group_kinetic[g] += correction;
+                  group_momentum[3 * g + dof_component[i]] +=
+                    m * (mean_new - mean_free);
                   v.local_element(i) = v_new;
+                }
+            }
+          // Dofs shared by several groups: split by their masses.
+          for (unsigned int k = 0; k < shared_dofs.size(); ++k)
+            {
+              const unsigned int i     = shared_dofs[k].dof;
+              const double       v_mid =
+                w_old * shared_velocity[k] + w_new * v.local_element(i);
+              for (unsigned int g = 0; g < n_groups; ++g)
+                {
+                  const double m = shared_dofs[k].mass_by_group[g];
+                  group_kinetic[g] += 0.5 * m * v_mid * v_mid;
+                  group_momentum[3 * g + dof_component[i]] += m * v_mid;
                 }
             }
           timing.vector_updates += lap(clock);
 
           // Collective 2: energies, contact forces on the bodies,
-          // reactions.
+          // reactions, per-group sums.
           sums[0] = kinetic;
-          sums[1] = element_result.internal_energy;
-          sums[2] = contact_result.penalty_energy;
-          sums[3] = element_result.bulk_viscosity_power;
+          sums[1] = results.internal_energy;
+          sums[2] = results.contact_energy;
+          sums[3] = results.bulk_viscosity_power;
           sums[4] = gravity_work_increment;
           sums[5] = constraint_work;
           sums[6] = constraint_work_next;
-          sums[7] = contact_result.friction_dissipation;
+          sums[7] = results.friction_dissipation;
+          sums[8] = results.external_work;
+          sums[9] = 0.;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
-              sums[n_energy_sums + 3 * b + d] =
-                contact_result.force_on_plane[b][d];
+              sums[body_offset + 3 * b + d] = results.force_on_body[b][d];
+          for (unsigned int g = 0; g < 4 * n_cgroups; ++g)
+            sums[reaction_offset + g] = local_reaction[g];
           for (unsigned int g = 0; g < n_groups; ++g)
-            sums[n_energy_sums + 3 * n_bodies + g] = local_reaction[g];
+            {
+              sums[group_offset + g] = results.internal_energy_by_group[g];
+              sums[group_offset + n_groups + 4 * g] = group_kinetic[g];
+              for (unsigned int d = 0; d < 3; ++d)
+                sums[group_offset + n_groups + 4 * g + 1 + d] =
+                  group_momentum[3 * g + d];
+            }
           Utilities::MPI::sum(ArrayView<const double>(sums),
                               comm,
                               ArrayView<double>(sums));
@@ -455,28 +631,48 @@ namespace rubberdyn
           energy.internal = sums[1];
           energy.contact  = sums[2];
           energy.bulk_viscosity_work += sums[3] * average_step;
-          energy.external_work += sums[4] + constraint_work_ahead + sums[5];
+          energy.external_work +=
+            sums[4] + constraint_work_ahead + sums[5] + sums[8];
           constraint_work_ahead = sums[6];
           energy.friction_work += sums[7];
+          for (unsigned int g = 0; g < n_cgroups; ++g)
+            {
+              reaction[g] = sums[reaction_offset + g];
+              for (unsigned int d = 0; d < 3; ++d)
+                reaction_moment[g][d] =
+                  sums[reaction_offset + n_cgroups + 3 * g + d];
+            }
           for (unsigned int g = 0; g < n_groups; ++g)
-            reaction[g] = sums[n_energy_sums + 3 * n_bodies + g];
+            {
+              group_internal_energy[g] = sums[group_offset + g];
+              group_motion[g].kinetic_energy =
+                sums[group_offset + n_groups + 4 * g];
+              for (unsigned int d = 0; d < 3; ++d)
+                group_motion[g].momentum[d] =
+                  sums[group_offset + n_groups + 4 * g + 1 + d];
+            }
+          const double half_step_time = current_time + 0.5 * new_step;
           for (unsigned int b = 0; b < n_bodies; ++b)
             {
               RigidBody &body = bodies[b];
               for (unsigned int d = 0; d < 3; ++d)
-                body.contact_force[d] = sums[n_energy_sums + 3 * b + d];
-              if (body.mass > 0.)
-                {
-                  Tensor<1, 3> v_new = body.velocity;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    if (body.free[d])
-                      v_new[d] += average_step *
-                                  (body.contact_force[d] / body.mass +
-                                   settings.gravity[d]);
-                  energy.kinetic +=
-                    0.125 * body.mass * (body.velocity + v_new).norm_square();
-                  body.velocity = v_new;
-                }
+                body.contact_force[d] = sums[body_offset + 3 * b + d];
+              Tensor<1, 3> v_new = body.velocity;
+              const Tensor<1, 3> prescribed =
+                body.prescribed_velocity ?
+                  body.prescribed_velocity(half_step_time) :
+                  Tensor<1, 3>();
+              for (unsigned int d = 0; d < 3; ++d)
+                if (body.moves_freely(d))
+                  v_new[d] += average_step *
+                              (body.contact_force[d] / body.mass +
+                               settings.gravity[d]);
+                else
+                  v_new[d] = prescribed[d];
+              energy.kinetic += 0.5 * body.mass *
+                                (w_old * body.velocity + w_new * v_new)
+                                  .norm_square();
+              body.velocity = v_new;
             }
 
           energy.largest_energy =
@@ -488,12 +684,19 @@ namespace rubberdyn
           monitor();
           timing.output += lap(clock);
 
-          // Displacements to t_{n+1}.
+          // Displacements to t_{n+1}. A body that is held or driven in a
+          // direction does work on the solid there: minus the solid's
+          // force on it times its displacement.
           for (RigidBody &body : bodies)
             {
               const Tensor<1, 3> increment = new_step * body.velocity;
               body.displacement += increment;
-              energy.external_work += body.mass * settings.gravity * increment;
+              for (unsigned int d = 0; d < 3; ++d)
+                if (body.moves_freely(d))
+                  energy.external_work +=
+                    body.mass * settings.gravity[d] * increment[d];
+                else
+                  energy.external_work -= body.contact_force[d] * increment[d];
             }
           gravity_work_increment = 0.;
           for (unsigned int i = 0; i < n_owned; ++i)
@@ -502,7 +705,8 @@ namespace rubberdyn
               u.local_element(i) += increment;
               gravity_work_increment += gravity_force.local_element(i) * increment;
             }
-          elements.accept_history();
+          for (model::ForceContribution *contribution : contributions)
+            contribution->accept_step();
           timing.vector_updates += lap(clock);
           u.update_ghost_values();
           v.update_ghost_values();

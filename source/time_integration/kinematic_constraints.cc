@@ -10,12 +10,26 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
+#include <map>
 
 namespace rubberdyn
 {
   namespace time_integration
   {
+    namespace
+    {
+      std::string
+      ids_text(const std::set<types::boundary_id> &ids)
+      {
+        std::string text;
+        for (const types::boundary_id id : ids)
+          text += (text.empty() ? "" : ", ") + std::to_string(id);
+        return text;
+      }
+    } // namespace
+
+
+
     KinematicConstraints::KinematicConstraints(
       const DoFHandler<3, 3> &                                   dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
@@ -25,62 +39,126 @@ namespace rubberdyn
 
 
 
-    std::vector<unsigned int>
-    KinematicConstraints::boundary_dofs(const types::boundary_id boundary_id,
-                                        const unsigned int       direction,
-                                        std::vector<double> *coordinates) const
+    std::vector<KinematicConstraints::Entry>
+    KinematicConstraints::boundary_entries(
+      const std::set<types::boundary_id> &boundary_ids,
+      const unsigned int                  direction,
+      const unsigned int                  group,
+      std::vector<Point<3>> *             vertices) const
     {
       const FiniteElement<3> &fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-      std::set<unsigned int>               dofs;
+      std::map<unsigned int, Entry>        entries;
       // Ghost cells too: an owned node may lie on a boundary face of a
       // neighbour's cell only.
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() || cell->is_ghost())
           for (const unsigned int face : cell->face_indices())
             if (cell->at_boundary(face) &&
-                cell->face(face)->boundary_id() == boundary_id)
+                boundary_ids.count(cell->face(face)->boundary_id()) > 0)
               {
                 cell->get_dof_indices(dof_indices);
                 for (unsigned int v = 0; v < 4; ++v)
                   {
                     const unsigned int vertex =
                       GeometryInfo<3>::face_to_cell_vertices(face, v);
-                    if (coordinates != nullptr)
-                      coordinates->push_back(cell->vertex(vertex)[direction]);
+                    if (vertices != nullptr)
+                      vertices->push_back(cell->vertex(vertex));
                     const types::global_dof_index dof =
                       dof_indices[fe.component_to_system_index(direction,
                                                                vertex)];
-                    if (partitioner->in_local_range(dof))
-                      dofs.insert(partitioner->global_to_local(dof));
+                    if (!partitioner->in_local_range(dof))
+                      continue;
+                    Entry entry;
+                    entry.dof   = partitioner->global_to_local(dof);
+                    entry.group = group;
+                    entry.X     = cell->vertex(vertex);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      entry.node_dofs[d] = partitioner->global_to_local(
+                        dof_indices[fe.component_to_system_index(d, vertex)]);
+                    entries[entry.dof] = entry;
                   }
               }
-      return std::vector<unsigned int>(dofs.begin(), dofs.end());
+      std::vector<Entry> result;
+      for (const auto &[dof, entry] : entries)
+        result.push_back(entry);
+      return result;
+    }
+
+
+
+    double
+    KinematicConstraints::prescribed_value(const Group &   g,
+                                           const Point<3> &X,
+                                           const double    t) const
+    {
+      return g.function(X, t);
     }
 
 
 
     void
-    KinematicConstraints::add_group(const std::string &name,
-                                    const std::vector<unsigned int> &dofs,
-                                    const std::function<double(double)> &velocity)
+    KinematicConstraints::prescribe(
+      const std::string &                 name,
+      const std::set<types::boundary_id> &boundary_ids,
+      const unsigned int                  direction,
+      const Kind                          kind,
+      const Function &                    function,
+      const bool                          depends_on_position,
+      const Point<3> &                    moment_point)
     {
-      const unsigned int group = velocities.size();
-      names.push_back(name);
-      velocities.push_back(velocity);
-      // A later group overrides an earlier one on a shared dof (the map
-      // from dof to entry keeps this linear in the number of dofs).
-      for (const unsigned int dof : dofs)
+      AssertThrow(direction < 3, ExcIndexRange(direction, 0, 3));
+      const unsigned int    group = groups.size();
+      std::vector<Point<3>> vertices;
+      const std::vector<Entry> entries =
+        boundary_entries(boundary_ids, direction, group, &vertices);
+      const unsigned int n_vertices =
+        Utilities::MPI::sum(static_cast<unsigned int>(vertices.size()),
+                            partitioner->get_mpi_communicator());
+      if (n_vertices == 0)
+        throw InputError(name,
+                         "no boundary face has the boundary id " +
+                           ids_text(boundary_ids));
+      groups.push_back(
+        {name, kind, function, depends_on_position, moment_point, 0.});
+
+      // A dof claimed before keeps its first group if both prescribe the
+      // same motion (sampled at a few times); otherwise the input
+      // contradicts itself.
+      std::string conflict;
+      for (const Entry &entry : entries)
         {
-          const auto existing = entry_of_dof.find(dof);
-          if (existing != entry_of_dof.end())
-            constrained[existing->second].group = group;
-          else
+          const auto existing = entry_of_dof.find(entry.dof);
+          if (existing == entry_of_dof.end())
             {
-              entry_of_dof[dof] = constrained.size();
-              constrained.push_back({dof, group});
+              entry_of_dof[entry.dof] = constrained.size();
+              constrained.push_back(entry);
+              continue;
+            }
+          const Group &first = groups[constrained[existing->second].group];
+          const Group &now   = groups[group];
+          for (const double t : {0., 0.37, 1.1, 10.})
+            {
+              const double a = prescribed_value(first, entry.X, t);
+              const double b = prescribed_value(now, entry.X, t);
+              const bool   same =
+                (first.kind == now.kind) ?
+                  std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)) :
+                  (a == 0. && b == 0.);
+              if (!same && conflict.empty())
+                conflict = "the node at (" +
+                           parameter_tools::format_short(entry.X[0]) + ", " +
+                           parameter_tools::format_short(entry.X[1]) + ", " +
+                           parameter_tools::format_short(entry.X[2]) +
+                           ") mm is also prescribed by '" + first.name +
+                           "' in the same direction, with another motion";
             }
         }
+      const std::vector<std::string> conflicts = Utilities::MPI::all_gather(
+        partitioner->get_mpi_communicator(), conflict);
+      for (const std::string &c : conflicts)
+        if (!c.empty())
+          throw InputError(name, c);
     }
 
 
@@ -92,18 +170,11 @@ namespace rubberdyn
       const unsigned int                   direction,
       const std::function<double(double)> &velocity)
     {
-      AssertThrow(direction < 3, ExcIndexRange(direction, 0, 3));
-      std::vector<double>             coordinates;
-      const std::vector<unsigned int> dofs =
-        boundary_dofs(boundary_id, direction, &coordinates);
-      const unsigned int n_vertices = Utilities::MPI::sum(
-        static_cast<unsigned int>(coordinates.size()),
-        partitioner->get_mpi_communicator());
-      if (n_vertices == 0)
-        throw InputError(name,
-                         "no boundary face has the boundary id " +
-                           std::to_string(boundary_id));
-      add_group(name, dofs, velocity);
+      prescribe(name, {boundary_id}, direction, Kind::velocity,
+                [velocity](const Point<3> &, const double t) {
+                  return velocity(t);
+                },
+                false);
     }
 
 
@@ -123,20 +194,69 @@ namespace rubberdyn
 
 
 
+    unsigned int
+    KinematicConstraints::plane_normal_direction(
+      const std::string &                 name,
+      const std::set<types::boundary_id> &boundary_ids) const
+    {
+      std::vector<Point<3>> vertices;
+      boundary_entries(boundary_ids, 0, 0, &vertices);
+      const MPI_Comm comm = partitioner->get_mpi_communicator();
+      double         range[6];
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          range[d]     = std::numeric_limits<double>::max(); // -lowest
+          range[3 + d] = std::numeric_limits<double>::max(); // highest
+        }
+      for (const Point<3> &x : vertices)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            range[d]     = std::min(range[d], x[d]);
+            range[3 + d] = std::min(range[3 + d], -x[d]);
+          }
+      Utilities::MPI::min(ArrayView<const double>(range, 6),
+                          comm,
+                          ArrayView<double>(range, 6));
+      if (range[0] > -range[3])
+        throw InputError(name,
+                         "no boundary face has the boundary id " +
+                           ids_text(boundary_ids));
+      double extent[3], size = 0.;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          extent[d] = -range[3 + d] - range[d];
+          size      = std::max(size, extent[d]);
+        }
+      // Flat to rounding of the coordinates (mm).
+      for (unsigned int d = 0; d < 3; ++d)
+        if (extent[d] <= 1e-10 * std::max(1., size))
+          return d;
+      throw InputError(name,
+                       "the faces of boundary " + ids_text(boundary_ids) +
+                         " are not in one plane normal to a coordinate axis "
+                         "(their extents are " +
+                         parameter_tools::format_short(extent[0]) + ", " +
+                         parameter_tools::format_short(extent[1]) + ", " +
+                         parameter_tools::format_short(extent[2]) +
+                         " mm); a symmetry condition needs one");
+    }
+
+
+
     void
     KinematicConstraints::symmetry_plane(const std::string &      name,
                                          const types::boundary_id boundary_id,
                                          const unsigned int normal_direction)
     {
       AssertThrow(normal_direction < 3, ExcIndexRange(normal_direction, 0, 3));
-      std::vector<double> coordinates;
-      boundary_dofs(boundary_id, normal_direction, &coordinates);
+      std::vector<Point<3>> vertices;
+      boundary_entries({boundary_id}, normal_direction, 0, &vertices);
       const MPI_Comm comm = partitioner->get_mpi_communicator();
       double lowest = std::numeric_limits<double>::max(), highest = -lowest;
-      for (const double x : coordinates)
+      for (const Point<3> &x : vertices)
         {
-          lowest  = std::min(lowest, x);
-          highest = std::max(highest, x);
+          lowest  = std::min(lowest, x[normal_direction]);
+          highest = std::max(highest, x[normal_direction]);
         }
       lowest  = Utilities::MPI::min(lowest, comm);
       highest = Utilities::MPI::max(highest, comm);
@@ -162,7 +282,66 @@ namespace rubberdyn
     std::vector<std::string>
     KinematicConstraints::group_names() const
     {
+      std::vector<std::string> names;
+      for (const Group &g : groups)
+        names.push_back(g.name);
       return names;
+    }
+
+
+
+    void
+    KinematicConstraints::begin_step(const double time,
+                                     const double time_step) const
+    {
+      step_time = time;
+      step_size = time_step;
+      static const Point<3> origin;
+      for (const Group &g : groups)
+        if (!g.depends_on_position)
+          g.step_value = g.kind == Kind::velocity ?
+                           g.function(origin, time + 0.5 * time_step) :
+                           g.function(origin, time + time_step);
+    }
+
+
+
+    double
+    KinematicConstraints::half_step_velocity(const Entry &entry,
+                                             const double displacement) const
+    {
+      const Group &g = groups[entry.group];
+      if (g.kind == Kind::velocity)
+        return g.depends_on_position ?
+                 g.function(entry.X, step_time + 0.5 * step_size) :
+                 g.step_value;
+      const double target = g.depends_on_position ?
+                              g.function(entry.X, step_time + step_size) :
+                              g.step_value;
+      return (target - displacement) / step_size;
+    }
+
+
+
+    double
+    KinematicConstraints::initial_velocity(const Entry &entry) const
+    {
+      const Group &g = groups[entry.group];
+      if (g.kind == Kind::velocity)
+        return g.function(entry.X, 0.);
+      // A forward difference over a step far below any explicit step.
+      const double h = 1e-9;
+      return (g.function(entry.X, h) - g.function(entry.X, 0.)) / h;
+    }
+
+
+
+    double
+    KinematicConstraints::velocity(const unsigned int group,
+                                   const double       t) const
+    {
+      static const Point<3> origin;
+      return groups[group].function(origin, t);
     }
   } // namespace time_integration
 } // namespace rubberdyn

@@ -17,11 +17,15 @@
 #include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <set>
 #include <vector>
@@ -142,17 +146,23 @@ namespace bar
    * of one law, penalty contact of the boundaries @p contact_ids with the
    * rigid @p surfaces (none by default), one rigid body per surface (held:
    * the caller may give them mass, freedom and velocity before the first
-   * run), and the solver without mass scaling and with default settings.
+   * run), the kinematic constraints that @p add_constraints adds (none by
+   * default), and the solver without mass scaling and with default
+   * settings.
    */
   struct ExplicitBar
   {
-    ExplicitBar(const Bar &                                      bar,
-                const rubberdyn::materials::MaterialModel<3> &   law,
-                const std::set<types::boundary_id> &             contact_ids = {},
-                const std::vector<rubberdyn::contact::RigidSurface> &surfaces =
-                  {},
-                const double penalty_scale = 1.)
+    ExplicitBar(
+      const Bar &                                          bar,
+      const rubberdyn::materials::MaterialModel<3> &       law,
+      const std::set<types::boundary_id> &                 contact_ids = {},
+      const std::vector<rubberdyn::contact::RigidSurface> &surfaces    = {},
+      const double                                         penalty_scale = 1.,
+      const std::function<void(
+        rubberdyn::time_integration::KinematicConstraints &)> &add_constraints =
+        {})
       : bodies(surfaces.size())
+      , constraints(bar.dof_handler, bar.partitioner)
     {
       elements.initialize(bar.dof_handler,
                           bar.partitioner,
@@ -164,20 +174,33 @@ namespace bar
                          {law.bulk_modulus()},
                          penalty_scale,
                          surfaces);
+      if (add_constraints)
+        add_constraints(constraints);
+      element_forces = std::make_unique<rubberdyn::elements::SolidHexForces>(
+        elements, std::vector<double>(elements.n_elements(), 1.));
+      std::vector<unsigned int> body_of_surface;
+      for (unsigned int s = 0; s < surfaces.size(); ++s)
+        body_of_surface.push_back(s);
+      contact_forces =
+        std::make_unique<rubberdyn::contact::RigidSurfaceForces>(
+          contact, body_of_surface);
       solver = std::make_unique<rubberdyn::time_integration::ExplicitSolver>(
         bar.dof_handler,
-        elements,
-        contact,
+        std::vector<rubberdyn::model::ForceContribution *>{
+          element_forces.get(), contact_forces.get()},
         bodies,
+        &constraints,
         bar.partitioner,
-        std::vector<double>(elements.n_elements(), 1.),
         rubberdyn::time_integration::ExplicitSettings(),
         bar.comm);
     }
 
-    rubberdyn::elements::SolidHexElements                         elements;
-    rubberdyn::contact::RigidSurfaceContact                       contact;
-    std::vector<rubberdyn::time_integration::RigidBody>           bodies;
+    rubberdyn::elements::SolidHexElements                        elements;
+    rubberdyn::contact::RigidSurfaceContact                      contact;
+    std::vector<rubberdyn::model::RigidBody>                     bodies;
+    rubberdyn::time_integration::KinematicConstraints            constraints;
+    std::unique_ptr<rubberdyn::elements::SolidHexForces>         element_forces;
+    std::unique_ptr<rubberdyn::contact::RigidSurfaceForces>      contact_forces;
     std::unique_ptr<rubberdyn::time_integration::ExplicitSolver> solver;
   };
 

@@ -81,21 +81,22 @@ main(int argc, char **argv)
   const unsigned int n_across = 3, n_along = 200;
   const bar::Bar     model(width, n_across, length, n_along, comm);
 
-  bar::ExplicitBar model_solver(model, steel); // no contact, no bodies
-  ti::ExplicitSolver &solver = *model_solver.solver;
-
-  ti::KinematicConstraints constraints(model.dof_handler, model.partitioner);
-  constraints.symmetry_plane("symmetry x = 0", bar::boundary::x_min, 0);
-  constraints.symmetry_plane("symmetry x = a", bar::boundary::x_max, 0);
-  constraints.symmetry_plane("symmetry y = 0", bar::boundary::y_min, 1);
-  constraints.symmetry_plane("symmetry y = a", bar::boundary::y_max, 1);
-  constraints.prescribe_velocity("driver",
-                                 bar::boundary::z_min,
-                                 2,
-                                 [v0](const double) { return v0; });
-  const unsigned int x_plane = 0, driver = 4;
-
-  solver.set_constraints(constraints);
+  // No contact, no bodies; symmetry planes on the sides, the end z = 0
+  // driven at v0.
+  bar::ExplicitBar model_solver(
+    model, steel, {}, {}, 1., [v0](ti::KinematicConstraints &constraints) {
+      constraints.symmetry_plane("symmetry x = 0", bar::boundary::x_min, 0);
+      constraints.symmetry_plane("symmetry x = a", bar::boundary::x_max, 0);
+      constraints.symmetry_plane("symmetry y = 0", bar::boundary::y_min, 1);
+      constraints.symmetry_plane("symmetry y = a", bar::boundary::y_max, 1);
+      constraints.prescribe_velocity("driver",
+                                     bar::boundary::z_min,
+                                     2,
+                                     [v0](const double) { return v0; });
+    });
+  ti::ExplicitSolver &            solver      = *model_solver.solver;
+  const ti::KinematicConstraints &constraints = model_solver.constraints;
+  const unsigned int              x_plane = 0, driver = 4;
 
   const std::vector<double> stations = {0.2 * length,
                                         0.35 * length,

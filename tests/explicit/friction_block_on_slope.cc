@@ -35,6 +35,8 @@
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/elastic.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
 #include "../tests.h"
@@ -96,7 +98,7 @@ namespace
     floor.initialize(dof_handler, partitioner, {4}, {block.bulk_modulus()},
                      1., {floor_surface});
     // The plane's body: held, or a belt of huge mass moving along x.
-    std::vector<time_integration::RigidBody> bodies(1);
+    std::vector<model::RigidBody> bodies(1);
     if (plane_velocity != 0.)
       {
         bodies[0].mass        = 1e6;
@@ -106,9 +108,16 @@ namespace
 
     time_integration::ExplicitSettings settings;
     settings.gravity = gravity;
-    time_integration::ExplicitSolver solver(
-      dof_handler, hexes, floor, bodies, partitioner,
-      std::vector<double>(hexes.n_elements(), 1.), settings, comm);
+    elements::SolidHexForces hex_forces(
+      hexes, std::vector<double>(hexes.n_elements(), 1.));
+    contact::RigidSurfaceForces      floor_forces(floor, {0});
+    time_integration::ExplicitSolver solver(dof_handler,
+                                            {&hex_forces, &floor_forces},
+                                            bodies,
+                                            nullptr,
+                                            partitioner,
+                                            settings,
+                                            comm);
 
     std::vector<unsigned int>            x_dofs;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());

@@ -21,6 +21,8 @@
 #include <rubberdyn/geometry/standing_cylinder.h>
 #include <rubberdyn/materials/hardening_curve.h>
 #include <rubberdyn/materials/j2_plasticity.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
 #include <sstream>
@@ -59,9 +61,15 @@ namespace
       bodies[1].velocity[2] = -2.;
       time_integration::ExplicitSettings settings;
       settings.gravity = -9.81e-3 * up;
+      element_forces   = std::make_unique<elements::SolidHexForces>(
+        elements, std::vector<double>(elements.n_elements(), 1.));
+      plate_forces = std::make_unique<contact::RigidSurfaceForces>(
+        plates, std::vector<unsigned int>{0, 1});
       solver = std::make_unique<time_integration::ExplicitSolver>(
-        dof_handler, elements, plates, bodies, partitioner,
-        std::vector<double>(elements.n_elements(), 1.), settings, comm);
+        dof_handler,
+        std::vector<model::ForceContribution *>{element_forces.get(),
+                                                plate_forces.get()},
+        bodies, nullptr, partitioner, settings, comm);
     }
 
     parallel::distributed::Triangulation<3>           triangulation;
@@ -71,7 +79,9 @@ namespace
     materials::J2Plasticity<3>                        metal;
     elements::SolidHexElements                        elements;
     contact::RigidSurfaceContact                      plates;
-    std::vector<time_integration::RigidBody>          bodies;
+    std::vector<model::RigidBody>                     bodies;
+    std::unique_ptr<elements::SolidHexForces>         element_forces;
+    std::unique_ptr<contact::RigidSurfaceForces>      plate_forces;
     std::unique_ptr<time_integration::ExplicitSolver> solver;
   };
 

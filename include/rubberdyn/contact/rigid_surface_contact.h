@@ -101,7 +101,8 @@ namespace rubberdyn
      * node that separates forgets its tangential force.
      *
      * The critical time step of a node of mass $m$ on its penalty spring is
-     * $2\sqrt{m/k}$; the explicit solver combines it with the elements'.
+     * $2\sqrt{m/k}$, or $2\sqrt{m/(n k)}$ while it touches n surfaces at
+     * once; the explicit solver combines it with the elements'.
      */
     class RigidSurfaceContact
     {
@@ -177,6 +178,11 @@ namespace rubberdyn
        * surface's translation at the last evaluation (mm, 3).
        */
       std::vector<double> friction_state;
+      /**
+       * Number of surfaces each node penetrated at the last add_forces():
+       * its springs act in parallel, which the stable step accounts for.
+       */
+      std::vector<unsigned char> n_touched;
     };
   } // namespace contact
 } // namespace rubberdyn

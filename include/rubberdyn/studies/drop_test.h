@@ -8,6 +8,11 @@
 
 namespace rubberdyn
 {
+  namespace model
+  {
+    class Model;
+  }
+
   namespace studies
   {
     /**
@@ -35,17 +40,27 @@ namespace rubberdyn
       /** Read and check the parameters. */
       explicit DropTest(dealii::ParameterHandler &prm);
 
-      /** Declare `Drop test/...`, `Time integration/...`, `Contact/...`,
-       * the output intervals and `Materials/Rubber/...`. */
+      /** Declare `Drop test/...`, `Time integration/Element formulation`
+       * and `Materials/Rubber/...` (the shared groups are declared by the
+       * registry). */
       static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &   prm,
+                         const registry::ListedNames &names);
 
       ~DropTest() override;
 
       void
       run(std::ostream &log) override;
 
+      /** Build the model and report it and its stable step, without running. */
+      void
+      check(std::ostream &log) override;
+
     private:
+      /** The drop test as a Model: mesh, the rubber part, the two plates. */
+      void
+      build_model(model::Model &model);
+
       struct Parameters;
       std::unique_ptr<Parameters> parameters;
     };

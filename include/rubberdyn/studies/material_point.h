@@ -31,7 +31,8 @@ namespace rubberdyn
 
       /** Declare `Material point/...` and `Materials/Specimen/...`. */
       static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &   prm,
+                         const registry::ListedNames &names);
 
       void
       run(std::ostream &log) override;

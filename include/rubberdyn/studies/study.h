@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,15 @@ namespace rubberdyn
        */
       virtual void
       run(std::ostream &log) = 0;
+
+      /**
+       * Validate without running (`rubberdyn --check`): the constructor has
+       * read and checked the parameters; a study with a model builds it
+       * here (mesh, parts, conditions, contacts) and reports it. Writes no
+       * results.
+       */
+      virtual void
+      check(std::ostream &log);
     };
 
 
@@ -43,12 +53,25 @@ namespace rubberdyn
      */
     namespace registry
     {
-      /** Declares the study's own parameters (at the top level). */
-      using DeclareFunction = std::function<void(dealii::ParameterHandler &)>;
+      /**
+       * The names listed by the parameter file's `Names` entries, by the
+       * path of the subsection that holds them (see
+       * io::read_listed_names()): studies declare a subsection per name.
+       */
+      using ListedNames = std::map<std::string, std::vector<std::string>>;
 
-      /** Creates the study from the parsed parameters. */
-      using CreateFunction =
-        std::function<std::unique_ptr<Study>(dealii::ParameterHandler &)>;
+      /** Declares the study's own parameters (at the top level). */
+      using DeclareFunction =
+        std::function<void(dealii::ParameterHandler &, const ListedNames &)>;
+
+      /**
+       * Creates the study from the parsed parameters; the second argument is
+       * the parameter file's path (empty for --default), against which a
+       * study resolves relative file names.
+       */
+      using CreateFunction = std::function<std::unique_ptr<Study>(
+        dealii::ParameterHandler &,
+        const std::string &)>;
 
       /** Add a study; returns a dummy value for static registration. */
       int
@@ -62,11 +85,13 @@ namespace rubberdyn
       names();
 
       /**
-       * Declare everything a parameter file may hold: `Study`, `Dimension`,
-       * the `Output` subsection and every registered study's parameters.
+       * Declare everything a parameter file may hold: `Study`, the shared
+       * groups (`Time integration`, `Contact`, `Output`, see
+       * rubberdyn::parameters) and every registered study's parameters.
        */
       void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const ListedNames &       names = {});
 
       /**
        * Create the study chosen by `Study`.
@@ -74,14 +99,16 @@ namespace rubberdyn
        * @throws InputError on invalid parameters.
        */
       std::unique_ptr<Study>
-      create(dealii::ParameterHandler &prm);
+      create(dealii::ParameterHandler &prm,
+             const std::string &       parameter_file = "");
     } // namespace registry
   }   // namespace studies
 } // namespace rubberdyn
 
 /**
- * Register study class @p classname (constructor from a non-const ParameterHandler, which it enters,
- * static `declare_parameters(ParameterHandler&)`) under @p name.
+ * Register study class @p classname (constructor from a non-const
+ * ParameterHandler, static `declare_parameters(ParameterHandler &, const
+ * ListedNames &)`) under @p name.
  */
 #define RUBBERDYN_REGISTER_STUDY(classname, name, description)        \
   namespace                                                           \
@@ -91,7 +118,7 @@ namespace rubberdyn
         name,                                                         \
         description,                                                  \
         &classname::declare_parameters,                               \
-        [](::dealii::ParameterHandler &prm)                           \
+        [](::dealii::ParameterHandler &prm, const std::string &)      \
           -> std::unique_ptr<::rubberdyn::studies::Study> {           \
           return std::make_unique<classname>(prm);                    \
         });                                                           \

@@ -3,15 +3,16 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
-#include <rubberdyn/base/vector.h>
 
-#include <rubberdyn/contact/rigid_surface_contact.h>
-#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/model/force_contribution.h>
+#include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,22 +31,7 @@ namespace rubberdyn
   namespace time_integration
   {
     using namespace dealii;
-
-    /**
-     * A rigid body that carries one rigid plane of the contact layer, free
-     * to translate along the directions its mask allows.
-     */
-    struct RigidBody
-    {
-      /** Mass (kg); ignored for a fixed body. */
-      double mass = 0.;
-      /** Translation allowed per direction (false: held). */
-      bool free[3] = {false, false, false};
-      /** Displacement (mm) and velocity at the last half step (mm/ms). */
-      Tensor<1, 3> displacement, velocity;
-      /** Force of the solid on the body at the last evaluation (kN). */
-      Tensor<1, 3> contact_force;
-    };
+    using model::RigidBody;
 
     /** Energies of the whole model (J = kN mm), summed over all ranks. */
     struct EnergyBalance
@@ -71,11 +57,32 @@ namespace rubberdyn
       relative_error() const;
 
       /**
+       * |E_kin + E_int + E_contact + W_bulk viscosity + W_friction - E_0 -
+       * W_ext| (J). A run's largest error is best judged as the largest of
+       * these over the run divided by the largest energy of the whole run:
+       * early on, when everything is O(dt^2), relative_error() is noisy.
+       */
+      double
+      absolute_error() const;
+
+      /**
        * The size of the energies now: max(sum of the magnitudes of the
        * present terms, |E_0| + |W_ext|).
        */
       double
       current_scale() const;
+    };
+
+    /**
+     * Kinetic energy and momentum of one group of nodes (a deformable
+     * part), at the current time, summed over all ranks.
+     */
+    struct GroupMotion
+    {
+      /** Kinetic energy (J). */
+      double kinetic_energy = 0.;
+      /** Momentum (kg mm/ms = N s). */
+      Tensor<1, 3> momentum;
     };
 
     /**
@@ -105,6 +112,11 @@ namespace rubberdyn
       double minimum_time_step = 1e-8;
       /** Gravitational acceleration (mm/ms^2), on solid and bodies. */
       Tensor<1, 3> gravity;
+      /**
+       * Number of element groups (parts) for the per-group internal
+       * energy, kinetic energy and momentum.
+       */
+      unsigned int n_groups = 1;
     };
 
     /** Raised when the run cannot go on (inverted element, tiny step). */
@@ -124,16 +136,21 @@ namespace rubberdyn
      * @f]
      * $\Delta t^n = (\Delta t^{n-1/2} + \Delta t^{n+1/2})/2$, and the first
      * half step starts from the initial velocity ($\Delta t^0 =
-     * \Delta t^{1/2}/2$). The step is re-evaluated every step from the
-     * elements (current wave speed and size, bulk viscosity) and the penalty
-     * springs, times the scale factor. A contact node is held by its
-     * elements and its penalty spring in parallel, so the step is limited
-     * by $1/\Delta t^2 = 1/\Delta t_e^2 + 1/\Delta t_c^2$ with the
-     * smallest element and contact steps (conservative: the two minima need
-     * not be at the same node). Per step there are exactly two MPI
-     * collectives: the minimum (stable step and failure flag) and one sum
-     * (contact forces on rigid bodies, reactions of kinematic constraints
-     * and energy terms).
+     * \Delta t^{1/2}/2$).
+     *
+     * The forces come from a list of model::ForceContribution (elements,
+     * rigid-surface contact, loads); the solver knows none of them
+     * concretely. The step is re-evaluated every step from the
+     * contributions' element and penalty-spring steps, times the scale
+     * factor. A contact node is held by its elements and its penalty spring
+     * in parallel, so the step is limited by $1/\Delta t^2 = 1/\Delta
+     * t_e^2 + 1/\Delta t_c^2$ with the smallest element and contact steps
+     * of the whole model: both minima are reduced over the ranks first and
+     * combined after, so that the step does not depend on the partition
+     * (conservative: the two minima need not be at the same node). Per
+     * step there are exactly two MPI collectives: the minimum (the two
+     * steps and the failure flag) and one sum (contact forces on rigid
+     * bodies, reactions of kinematic constraints and energy terms).
      *
      * Kinematic constraints overwrite the half-step velocities of their
      * dofs; their reaction $r = M(v^{n+1/2} - v^{n-1/2})/\Delta t^n - f^n$
@@ -142,34 +159,57 @@ namespace rubberdyn
      * $\tfrac12 (r^{n-1} + r^n) \cdot v^{n-1/2} \Delta t^{n-1/2}$ from
      * $t_{n-1}$ to $t_n$ (on the first step $r^0 \cdot \tfrac12 (v^0 +
      * v^{1/2}) \Delta t^0$, exact for a jump from the initial velocity).
+     * The constraints are given to the constructor and applied at the
+     * first step (or kept from a checkpoint), so that no call order can
+     * overwrite a loaded state.
+     *
+     * A rigid body with mass 0, or in a held direction, moves with its
+     * prescribed velocity; the work it does on the solid,
+     * $-F_{solid\to body} \cdot \Delta x_{body}$, is external work.
      */
     class ExplicitSolver
     {
     public:
       /**
        * Set up on a distributed DoFHandler (FESystem(FE_Q(1), 3)).
+       *
+       * @param contributions The force contributions (kept by reference).
+       * @param bodies The rigid bodies (kept by reference).
+       * @param constraints Prescribed velocities, or nullptr (kept by
+       *   reference).
+       * @param dof_group Element group of each locally owned node's dofs
+       *   (settings.n_groups for a node shared by several groups, or none),
+       *   empty: one group.
        */
-      ExplicitSolver(const DoFHandler<3, 3> &                  dof_handler,
-                     elements::SolidHexElements &              elements,
-                     contact::RigidSurfaceContact &              contact,
-                     std::vector<RigidBody> &                  bodies,
-                     const std::shared_ptr<const Utilities::MPI::Partitioner>
-                       &                                       partitioner,
-                     const std::vector<double> &               density_scaling,
-                     const ExplicitSettings &                  settings,
-                     const MPI_Comm                            comm);
+      ExplicitSolver(
+        const DoFHandler<3, 3> &                          dof_handler,
+        const std::vector<model::ForceContribution *> &   contributions,
+        std::vector<RigidBody> &                          bodies,
+        const KinematicConstraints *                      constraints,
+        const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+        const ExplicitSettings &                          settings,
+        const MPI_Comm                                    comm);
 
       /** Set a uniform initial velocity of the solid (mm/ms). */
       void
       set_initial_velocity(const Tensor<1, 3> &velocity);
 
       /**
-       * Prescribe velocities on boundaries (must stay alive during run()).
-       * The initial velocity of constrained dofs is overwritten by the
-       * prescribed one at t = 0.
+       * Set the initial velocity of the solid per dof (mm/ms; owned entries
+       * are read). Before the first step only.
        */
       void
-      set_constraints(const KinematicConstraints &constraints);
+      set_initial_velocity(const VectorType &velocity);
+
+      /**
+       * Group of each node for the per-group kinetic energy and momentum:
+       * @p group_mass[g] is the lumped physical mass of group g per dof
+       * (compressed), g < settings.n_groups. A dof with mass in one group
+       * only counts for it; a dof shared by several is split in proportion
+       * to their masses.
+       */
+      void
+      set_group_masses(const std::vector<VectorType> &group_mass);
 
       /**
        * Advance until @p end_time. After every step @p monitor is called
@@ -178,8 +218,7 @@ namespace rubberdyn
        * @throws SolverFailure naming the element, position, time and step.
        */
       void
-      run(const double                        end_time,
-          const std::function<void()> &       monitor);
+      run(const double end_time, const std::function<void()> &monitor);
 
       /**
        * Time (ms), last step size (ms) and step count. Inside the monitor:
@@ -193,8 +232,20 @@ namespace rubberdyn
       const VectorType &displacement() const { return u; }
       /** Velocity at the last half step (ghosted). */
       const VectorType &velocity() const { return v; }
+      /** Lumped mass with mass scaling (ghosted). */
+      const VectorType &lumped_mass() const { return mass; }
       /** Energies at the current time. */
       const EnergyBalance &energies() const { return energy; }
+      /** Internal energy of each element group at the current time (J). */
+      const std::vector<double> &internal_energy_by_group() const
+      {
+        return group_internal_energy;
+      }
+      /** Kinetic energy and momentum of each group at the current time. */
+      const std::vector<GroupMotion> &motion_by_group() const
+      {
+        return group_motion;
+      }
       /** Total added mass of mass scaling (kg). */
       double added_mass() const { return total_added_mass; }
       /** Physical mass of the solid (kg). */
@@ -205,11 +256,19 @@ namespace rubberdyn
        */
       const std::vector<double> &reactions() const { return reaction; }
       /**
+       * Reaction moment (kN mm) of each group about its moment point, with
+       * the nodes' current positions, summed over all ranks.
+       */
+      const std::vector<Tensor<1, 3>> &reaction_moments() const
+      {
+        return reaction_moment;
+      }
+      /**
        * Write this rank's part of the complete model state between two
        * steps (time, step, displacements, velocities, energies, rigid
-       * bodies, reactions, material history, contact state) to @p out,
-       * binary. run() may be called again afterwards, or another solver of
-       * the same model (same mesh, partition, laws, contact surfaces and
+       * bodies, reactions, every contribution's state) to @p out, binary.
+       * run() may be called again afterwards, or another solver of the
+       * same model (same mesh, partition, laws, contact surfaces and
        * bodies) can load() it and continue: the continuation is identical
        * to the last bit (tests/explicit/restart_is_identical).
        */
@@ -228,31 +287,52 @@ namespace rubberdyn
       const StepTimings &timings() const { return timing; }
 
     private:
-      elements::SolidHexElements &                       elements;
-      contact::RigidSurfaceContact &                       contact;
+      /** Evaluate all contributions at u^n into f; fills `results`. */
+      void
+      evaluate_forces();
+
+      std::vector<model::ForceContribution *>            contributions;
       std::vector<RigidBody> &                           bodies;
+      const KinematicConstraints *                       constraints;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      std::vector<double>                                density_scaling;
       ExplicitSettings                                   settings;
       MPI_Comm                                           comm;
 
       VectorType u, v, f, mass, inverse_mass, gravity_force;
       /** Direction (0, 1, 2) of each locally owned dof. */
       std::vector<unsigned char> dof_component;
+      /** Reference coordinate of each locally owned dof's node (mm). */
+      std::vector<double> dof_coordinate;
+      /**
+       * For the per-group sums: per locally owned dof its group, or
+       * n_groups if it is shared by several groups (then `shared_dofs`
+       * splits it by mass).
+       */
+      std::vector<unsigned int> dof_group;
+      struct SharedDof
+      {
+        unsigned int        dof;
+        std::vector<double> mass_by_group;
+      };
+      std::vector<SharedDof> shared_dofs;
+
       double       current_time = 0., last_time_step = 0.;
       unsigned int step_number  = 0;
       EnergyBalance energy;
+      std::vector<double>      group_internal_energy;
+      std::vector<GroupMotion> group_motion;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
       /** Gravity work of the last displacement update, booked next step. */
       double                      gravity_work_increment = 0.;
-      const KinematicConstraints *constraints = nullptr;
       std::vector<double>         reaction;
+      std::vector<Tensor<1, 3>>   reaction_moment;
       /**
        * The constraints' reactions' share of their work on [t_n, t_{n+1}]
        * (summed over all ranks): it belongs to the energies at t_{n+1}.
        */
       double constraint_work_ahead = 0.;
+      model::ContributionResults  results;
       StepTimings                 timing;
     };
   } // namespace time_integration

@@ -2,10 +2,12 @@
 #define rubberdyn_time_integration_kinematic_constraints_h
 
 #include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -23,20 +25,39 @@ namespace rubberdyn
     using namespace dealii;
 
     /**
-     * Prescribed velocities of the nodes on boundaries, by boundary id: a
-     * fixed boundary, a velocity given as a function of time in one
-     * direction, or a symmetry plane normal to a coordinate axis (zero normal
-     * velocity, free tangential motion). Each call adds one named group; the
-     * explicit solver overwrites the groups' velocities every step and
-     * reports the reaction force of each group (the force the constraint
-     * exerts on the solid) and its work in the energy balance.
+     * Prescribed motion of the nodes on boundaries, by boundary id: a
+     * fixed boundary, a velocity or a displacement given as a function of
+     * the reference position and time in one direction, or a symmetry
+     * plane normal to a coordinate axis (zero normal velocity, free
+     * tangential motion). Each call adds one named group (one direction);
+     * the explicit solver overwrites the groups' half-step velocities every
+     * step and reports the reaction force of each group (the force the
+     * constraint exerts on the solid), its moment about the group's moment
+     * point and its work in the energy balance.
      *
-     * A node on two groups gets the velocity of the later one in the
-     * direction both prescribe.
+     * A dof may belong to one group only, unless two groups prescribe the
+     * same motion there (e.g. two fixed faces sharing an edge): then the
+     * first keeps it. Two groups that prescribe different motions of the
+     * same dof are an InputError naming both.
      */
     class KinematicConstraints
     {
     public:
+      /** What a group's function prescribes. */
+      enum class Kind
+      {
+        /** The velocity (mm/ms) at the half step. */
+        velocity,
+        /** The displacement (mm) at the next full step. */
+        displacement
+      };
+
+      /**
+       * A prescribed value as a function of the reference position X (mm)
+       * and time t (ms).
+       */
+      using Function = std::function<double(const Point<3> &X, double t)>;
+
       /**
        * @param dof_handler Distributed FESystem(FE_Q(1), 3) handler.
        * @param partitioner Its vector partitioner (owned + ghost dofs).
@@ -44,6 +65,27 @@ namespace rubberdyn
       KinematicConstraints(
         const DoFHandler<3, 3> &                                   dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
+
+      /**
+       * Prescribe @p kind in direction @p direction (0, 1, 2) for the nodes
+       * on the boundaries @p boundary_ids.
+       *
+       * @param depends_on_position Whether @p function uses X; if not, it is
+       *   evaluated once per step for the whole group.
+       * @param moment_point Point about which the reaction moment is
+       *   reported (mm).
+       * @throws InputError naming @p name if no face of the mesh (on any
+       *   rank) has one of the boundary ids, or if a dof is already
+       *   prescribed differently by another group.
+       */
+      void
+      prescribe(const std::string &                 name,
+                const std::set<types::boundary_id> &boundary_ids,
+                const unsigned int                  direction,
+                const Kind                          kind,
+                const Function &                    function,
+                const bool                          depends_on_position,
+                const Point<3> &                    moment_point = Point<3>());
 
       /**
        * Velocity @p velocity(t) (mm/ms) in direction @p direction (0, 1, 2)
@@ -75,6 +117,17 @@ namespace rubberdyn
                      const types::boundary_id boundary_id,
                      const unsigned int       normal_direction);
 
+      /**
+       * The direction normal to the plane of the faces on @p boundary_ids,
+       * which must be one plane normal to a coordinate axis.
+       *
+       * @throws InputError naming @p name otherwise.
+       */
+      unsigned int
+      plane_normal_direction(
+        const std::string &                 name,
+        const std::set<types::boundary_id> &boundary_ids) const;
+
       /** Names of the groups, in the order they were added. */
       std::vector<std::string>
       group_names() const;
@@ -86,6 +139,10 @@ namespace rubberdyn
         unsigned int dof;
         /** Its group. */
         unsigned int group;
+        /** Local indices of the x, y, z dofs of its node. */
+        unsigned int node_dofs[3];
+        /** Reference position of its node (mm). */
+        Point<3> X;
       };
 
       /** The constrained locally owned dofs. */
@@ -95,43 +152,84 @@ namespace rubberdyn
         return constrained;
       }
 
-      /** Prescribed velocity of @p group at time @p t (mm/ms). */
+      /**
+       * Evaluate the groups that do not depend on position for the step
+       * from @p time (t_n) with size @p time_step: call before
+       * half_step_velocity() on every step.
+       */
+      void
+      begin_step(const double time, const double time_step) const;
+
+      /**
+       * The velocity (mm/ms) of @p entry on the half step from t_n to
+       * t_n + dt, for the step begun by begin_step(): a velocity group's
+       * value at the half step, a displacement group's (g(X, t_n + dt) -
+       * u_n) / dt with @p displacement the current u_n of the dof.
+       */
       double
-      velocity(const unsigned int group, const double t) const
-      {
-        return velocities[group](t);
-      }
+      half_step_velocity(const Entry &entry, const double displacement) const;
+
+      /**
+       * The velocity (mm/ms) of @p entry at t = 0: a velocity group's value,
+       * a displacement group's time derivative (by a finite difference).
+       */
+      double
+      initial_velocity(const Entry &entry) const;
+
+      /** Prescribed velocity of @p group at time @p t (mm/ms), for
+       * position-independent velocity groups. */
+      double
+      velocity(const unsigned int group, const double t) const;
 
       /** Number of groups. */
       unsigned int
       n_groups() const
       {
-        return velocities.size();
+        return groups.size();
+      }
+
+      /** The moment point of @p group (mm). */
+      const Point<3> &
+      moment_point(const unsigned int group) const
+      {
+        return groups[group].moment_point;
       }
 
     private:
-      /**
-       * The locally owned dofs of direction @p direction on
-       * @p boundary_id; appends the coordinate @p direction of the vertices
-       * of this rank's faces on it to @p coordinates.
-       */
-      std::vector<unsigned int>
-      boundary_dofs(const types::boundary_id boundary_id,
-                    const unsigned int       direction,
-                    std::vector<double> *    coordinates) const;
+      struct Group
+      {
+        std::string name;
+        Kind        kind;
+        Function    function;
+        bool        depends_on_position;
+        Point<3>    moment_point;
+        /** This step's value (position-independent groups). */
+        mutable double step_value = 0.;
+      };
 
-      void
-      add_group(const std::string &                  name,
-                const std::vector<unsigned int> &    dofs,
-                const std::function<double(double)> &velocity);
+      /**
+       * The locally owned dofs of direction @p direction on the faces with
+       * @p boundary_ids, as entries of group @p group; appends the
+       * vertices of this rank's faces on them to @p vertices.
+       */
+      std::vector<Entry>
+      boundary_entries(const std::set<types::boundary_id> &boundary_ids,
+                       const unsigned int                  direction,
+                       const unsigned int                  group,
+                       std::vector<Point<3>> *             vertices) const;
+
+      /** The value group @p g prescribes at @p X, time t. */
+      double
+      prescribed_value(const Group &g, const Point<3> &X, const double t) const;
 
       const DoFHandler<3, 3> &                           dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      std::vector<std::string>                           names;
-      std::vector<std::function<double(double)>>         velocities;
+      std::vector<Group>                                 groups;
       std::vector<Entry>                                 constrained;
       /** Index in `constrained` of each constrained dof. */
       std::unordered_map<unsigned int, unsigned int>     entry_of_dof;
+      /** t_n and dt of the step begun by begin_step(). */
+      mutable double step_time = 0., step_size = 0.;
     };
   } // namespace time_integration
 } // namespace rubberdyn

@@ -1,0 +1,57 @@
+#ifndef rubberdyn_contact_rigid_surface_forces_h
+#define rubberdyn_contact_rigid_surface_forces_h
+
+#include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/model/force_contribution.h>
+
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace contact
+  {
+    /**
+     * Node-to-surface penalty contact with rigid surfaces as a force
+     * contribution: each surface moves with the translation of its rigid
+     * body; the contact forces on the bodies, the penalty energy, the
+     * friction dissipation, the penalty springs' stable step and the
+     * friction state in checkpoints.
+     */
+    class RigidSurfaceForces : public model::ForceContribution
+    {
+    public:
+      /**
+       * @param contact Initialised contact (kept by reference).
+       * @param body_of_surface Index of the rigid body that carries each
+       *   surface of @p contact.
+       */
+      RigidSurfaceForces(RigidSurfaceContact &            contact,
+                         const std::vector<unsigned int> &body_of_surface);
+
+      std::string
+      name() const override;
+
+      Accumulation
+      accumulation() const override;
+
+      void
+      add_forces(const model::EvaluationPoint &point,
+                 VectorType &                  f,
+                 model::ContributionResults &  results) override;
+
+      void
+      save(std::ostream &out) const override;
+
+      void
+      load(std::istream &in) override;
+
+    private:
+      RigidSurfaceContact &     contact;
+      std::vector<unsigned int> body_of_surface;
+      std::vector<Tensor<1, 3>> surface_displacement;
+      ContactResult             contact_result;
+    };
+  } // namespace contact
+} // namespace rubberdyn
+
+#endif

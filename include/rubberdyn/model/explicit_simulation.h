@@ -1,0 +1,175 @@
+#ifndef rubberdyn_model_explicit_simulation_h
+#define rubberdyn_model_explicit_simulation_h
+
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/parameters/contact_parameters.h>
+#include <rubberdyn/parameters/output_parameters.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
+#include <rubberdyn/postprocess/postprocessor.h>
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace elements
+  {
+    class SolidHexElements;
+    class SolidHexForces;
+  } // namespace elements
+  namespace contact
+  {
+    class RigidSurfaceContact;
+    class RigidSurfaceForces;
+  } // namespace contact
+  namespace time_integration
+  {
+    class ExplicitSolver;
+    class KinematicConstraints;
+  } // namespace time_integration
+
+  namespace postprocess
+  {
+    class TimeHistory;
+  }
+
+  namespace model
+  {
+    /**
+     * The one engine path of explicit dynamics: takes any Model and runs
+     * it. It builds the force contributions (elements with mass scaling,
+     * one rigid-surface contact per rigid surface), the kinematic
+     * constraints of the boundary conditions and the central-difference
+     * solver, then advances in time while the postprocessors watch, writing
+     * time_history.csv (time, time_step and the plugins' columns), the
+     * checkpoints and run_summary.json. Studies (Model, Drop test) only
+     * build the Model and choose the postprocessors.
+     */
+    class ExplicitSimulation
+    {
+    public:
+      /**
+       * Set everything up (nothing is written yet).
+       *
+       * @param title First word of the log's first line (e.g. "Drop test").
+       * @param model_parameters The parameters that define the model, as
+       *   text: a restart must find the same in its checkpoint.
+       */
+      ExplicitSimulation(Model &                             model,
+                         const parameters::TimeIntegration &time_integration,
+                         const parameters::Output &          output,
+                         const std::string &                 title,
+                         const std::string &                 model_parameters);
+
+      ~ExplicitSimulation();
+
+      /**
+       * Add the Model study's columns: energies (with friction work), the
+       * reactions of every boundary condition, the sums of every part and
+       * the motion of every rigid surface.
+       */
+      void
+      add_standard_postprocessors();
+
+      /** Add a postprocessor; history columns follow the order of adding. */
+      void
+      add_postprocessor(std::unique_ptr<postprocess::Postprocessor> plugin);
+
+      /**
+       * Log the model (cells, dofs, ranks, the parts' constants, masses)
+       * and the first stable time step, without running: `--check`.
+       */
+      void
+      check(std::ostream &log);
+
+      /**
+       * Run to the end time (or until a postprocessor asks to stop).
+       *
+       * @throws std::runtime_error if the solver fails, after writing the
+       *   last state.
+       */
+      void
+      run(std::ostream &log);
+
+      /** The solver (after construction). */
+      const time_integration::ExplicitSolver &
+      solver() const;
+
+      /**
+       * The text of the model parameters of a ParameterHandler: every entry
+       * except `Time integration/End time` and the `Output` subsection, one
+       * per line (for the restart check).
+       */
+      static std::string
+      model_parameters_text(const dealii::ParameterHandler &prm);
+
+    private:
+      /** Log the model's header lines. */
+      void
+      log_model(std::ostream &log) const;
+
+      /**
+       * time_history.svg beside time_history.csv: the energies, the forces
+       * (columns ending in _force, _force_x/_y/_z) and the displacements
+       * against time (rank 0).
+       */
+      void
+      write_history_plot(const std::vector<std::string> &columns) const;
+
+      /** Write a checkpoint of the current state (collective). */
+      void
+      write_checkpoint(const unsigned long history_rows,
+                       const unsigned int  restarts);
+
+      /**
+       * Read and check study.txt of the checkpoint in the output directory
+       * (model parameters, ranks); returns the number of history rows and
+       * of restarts stored with it.
+       */
+      std::pair<unsigned long, unsigned int>
+      read_checkpoint_header();
+
+      /**
+       * Load every rank's piece of the checkpoint (collective) and check
+       * that all belong to the step study.txt names.
+       */
+      void
+      read_checkpoint_state();
+
+      Model &                             model;
+      parameters::TimeIntegration         time_integration;
+      parameters::Output                  output;
+      std::string                         title;
+      std::string                         model_parameters;
+      std::unique_ptr<elements::SolidHexElements> elements;
+      std::unique_ptr<elements::SolidHexForces>   element_forces;
+      std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
+      std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  contact_forces;
+      std::vector<RigidBody>                                     bodies;
+      std::unique_ptr<time_integration::KinematicConstraints>    constraints;
+      std::unique_ptr<time_integration::ExplicitSolver>          explicit_solver;
+      std::vector<std::unique_ptr<postprocess::Postprocessor>>   postprocessors;
+      /** Boundary condition and direction of each constraint group. */
+      std::vector<unsigned int> condition_of_group, direction_of_group;
+      /** Added mass of mass scaling per part (kg, all ranks). */
+      std::vector<double> added_mass_by_part;
+      /** time_history.csv (rows on rank 0). */
+      std::unique_ptr<postprocess::TimeHistory> history;
+      /** Next history row and checkpoint times (ms). */
+      double next_history = 0., next_checkpoint = 0.;
+      /**
+       * Largest absolute energy error so far (J); at the end of run(),
+       * divided by the run's largest energy.
+       */
+      double max_energy_error = 0.;
+      /** The checkpoint being read: its folder, step and time. */
+      std::string   checkpoint_directory;
+      unsigned long checkpoint_step = 0;
+      double        checkpoint_time = 0.;
+    };
+  } // namespace model
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,161 @@
+#ifndef rubberdyn_model_force_contribution_h
+#define rubberdyn_model_force_contribution_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/model/rigid_body.h>
+
+#include <iosfwd>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    using namespace dealii;
+
+    /** Where and why the evaluation of a contribution failed. */
+    struct EvaluationFailure
+    {
+      /** Whether anything failed in this evaluation. */
+      bool failed = false;
+      /** What failed and where (cell id, position, the law's message). */
+      std::string message;
+    };
+
+    /**
+     * What the contributions report besides their forces in one
+     * evaluation. Every contribution adds to the terms that concern it and
+     * leaves the others alone; the time integrator sums them over ranks and
+     * books them in the energy balance.
+     */
+    struct ContributionResults
+    {
+      /** Strain energy stored in the elements (J = kN mm). */
+      double internal_energy = 0.;
+      /** The same per element group (J), indexed like the element groups. */
+      std::vector<double> internal_energy_by_group;
+      /** Energy in penalty springs (J). */
+      double contact_energy = 0.;
+      /** Power of the bulk viscosity forces (kN mm/ms). */
+      double bulk_viscosity_power = 0.;
+      /** Energy dissipated by friction in this evaluation (J). */
+      double friction_dissipation = 0.;
+      /**
+       * External work of the contribution's loads on the solid that is
+       * due at this evaluation's time (J): a contribution with a load books
+       * its own work (e.g. by the trapezoidal rule over the last step).
+       */
+      double external_work = 0.;
+      /** Smallest stable step of the elements (ms). */
+      double element_time_step = std::numeric_limits<double>::max();
+      /** Smallest stable step of the penalty springs (ms). */
+      double contact_time_step = std::numeric_limits<double>::max();
+      /** Force of the solid on each rigid body (kN), indexed like the bodies. */
+      std::vector<Tensor<1, 3>> force_on_body;
+      /** Set if an element inverted or another evaluation failed. */
+      EvaluationFailure failure;
+
+      /** Zero every term, with room for @p n_groups and @p n_bodies. */
+      void
+      reset(const unsigned int n_groups, const unsigned int n_bodies);
+    };
+
+    /**
+     * What a contribution sees: the solid's displacement at t_n and
+     * velocity at t_{n-1/2} (both ghosted), the lumped masses, the rigid
+     * bodies and the time t_n.
+     */
+    struct EvaluationPoint
+    {
+      const VectorType &             displacement;
+      const VectorType &             velocity;
+      /** Lumped nodal masses (kg, with mass scaling; ghosted). */
+      const VectorType &             mass;
+      const std::vector<RigidBody> & bodies;
+      double                         time;
+    };
+
+    /**
+     * One source of nodal forces on the solid: the elements, contact with
+     * rigid surfaces, distributed loads; later mortar pairs. The time
+     * integrators loop over contributions and know no concrete class.
+     *
+     * A contribution writes its forces in one of two ways, which it
+     * declares with accumulation(): as internal forces (the resisting
+     * force $f_{int}$, sign as the elements') into owned and ghost entries,
+     * which the integrator then compresses and negates, or as external
+     * forces (acting on the solid) into owned entries only, added after
+     * that. Elements are the first kind; node-based contact the second.
+     */
+    class ForceContribution
+    {
+    public:
+      /** How add_forces() writes into the force vector. */
+      enum class Accumulation
+      {
+        /** Resisting forces into owned and ghost entries (compressed). */
+        internal_ghosted,
+        /** Forces acting on the solid into owned entries only. */
+        external_owned
+      };
+
+      virtual ~ForceContribution() = default;
+
+      /** A short name for logs and error messages. */
+      virtual std::string
+      name() const = 0;
+
+      /** How add_forces() writes (see the class documentation). */
+      virtual Accumulation
+      accumulation() const = 0;
+
+      /**
+       * Add the forces at @p point into @p f and the energies, stable
+       * steps, body forces and failures into @p results. Called once per
+       * time step; a contribution with a history (plasticity, friction)
+       * computes the new one here and keeps it until accept_step().
+       */
+      virtual void
+      add_forces(const EvaluationPoint &point,
+                 VectorType &           f,
+                 ContributionResults &  results) = 0;
+
+      /** The step was taken: make the history of the last evaluation current. */
+      virtual void
+      accept_step()
+      {}
+
+      /**
+       * Add this contribution's lumped masses (kg) into @p mass (with mass
+       * scaling) and @p physical_mass (without), owned and ghost entries.
+       */
+      virtual void
+      add_lumped_mass(VectorType &mass, VectorType &physical_mass) const
+      {
+        (void)mass;
+        (void)physical_mass;
+      }
+
+      /** Write the contribution's state (history) for a checkpoint. */
+      virtual void
+      save(std::ostream &out) const
+      {
+        (void)out;
+      }
+
+      /** Read what save() wrote. */
+      virtual void
+      load(std::istream &in)
+      {
+        (void)in;
+      }
+    };
+  } // namespace model
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,140 @@
+#ifndef rubberdyn_model_model_h
+#define rubberdyn_model_model_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/model/rigid_body.h>
+
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  /**
+   * The model: what a study builds and every solver uses. A mesh with
+   * material and boundary ids, the parts (a law and an element formulation
+   * per set of material ids), the boundary conditions, the rigid surfaces
+   * with their bodies and the gravity. Studies only build a Model (from a
+   * Gmsh file and a .prm, or from a generator such as the drop test's);
+   * model::ExplicitSimulation runs any Model.
+   */
+  namespace model
+  {
+    using namespace dealii;
+
+    /** A part: the cells of some material ids, one law, one formulation. */
+    struct Part
+    {
+      /** Name (the columns `<name>_kinetic_energy` etc.). */
+      std::string name;
+      /** The material ids (Gmsh physical volume tags) of its cells. */
+      std::set<types::material_id> material_ids;
+      /** The constitutive law. */
+      std::unique_ptr<materials::MaterialModel<3>> law;
+      /** Element formulation. */
+      elements::Formulation formulation = elements::Formulation::fbar;
+      /** Initial velocity of its nodes (mm/ms). */
+      Tensor<1, 3> initial_velocity;
+    };
+
+    /** A boundary condition on some boundary ids. */
+    struct BoundaryCondition
+    {
+      /** What the condition prescribes. */
+      enum class Type
+      {
+        /** All listed components held at zero displacement. */
+        fixed,
+        /** Displacement u(X, t) (mm) in the listed components. */
+        displacement,
+        /** Velocity v(X, t) (mm/ms) in the listed components. */
+        velocity,
+        /** Zero normal displacement of a plane face normal to an axis. */
+        symmetry
+      };
+      /** Name (the columns `<name>_force_x` etc.). */
+      std::string name;
+      /** Its faces' boundary ids (Gmsh physical surface tags). */
+      std::set<types::boundary_id> boundary_ids;
+      Type type = Type::fixed;
+      /** The components it acts on. */
+      std::vector<unsigned int> components = {0, 1, 2};
+      /**
+       * The prescribed value of each component in `components` as a
+       * function of the reference position (mm) and time (ms).
+       */
+      std::vector<std::function<double(const Point<3> &, double)>> functions;
+      /** Whether the functions use the position. */
+      bool depends_on_position = false;
+      /** The reaction moment is taken about this point (mm). */
+      Point<3> moment_point;
+    };
+
+    /** A rigid surface carried by a rigid body. */
+    struct RigidSurfaceDefinition
+    {
+      /** Name (the columns `<name>_position_x` etc.). */
+      std::string name;
+      /** Shape, position, friction coefficient. */
+      contact::RigidSurface surface;
+      /** The body that carries it (mass, free directions, velocity). */
+      RigidBody body;
+      /** Boundary ids of the solid faces that may touch it. */
+      std::set<types::boundary_id> boundary_ids;
+      /** Penalty scale factor of its springs (-). */
+      double penalty_scale = 0.1;
+    };
+
+    /**
+     * The complete model, distributed over the ranks of its communicator.
+     */
+    class Model
+    {
+    public:
+      explicit Model(const MPI_Comm comm);
+
+      /**
+       * After the mesh, parts, conditions and surfaces are set: distribute
+       * the dofs and check that every cell belongs to exactly one part.
+       *
+       * @throws InputError naming the part or material id otherwise.
+       */
+      void
+      setup();
+
+      /** Index of the part that holds @p material_id. */
+      unsigned int
+      part_of_material_id(const types::material_id material_id) const;
+
+      /** The boundary ids present in the mesh (on any rank). */
+      std::set<types::boundary_id>
+      boundary_ids_in_mesh() const;
+
+      MPI_Comm                                  comm;
+      parallel::distributed::Triangulation<3>   triangulation;
+      FESystem<3>                               fe;
+      DoFHandler<3>                             dof_handler;
+      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+
+      std::vector<Part>                   parts;
+      std::vector<BoundaryCondition>      boundary_conditions;
+      std::vector<RigidSurfaceDefinition> rigid_surfaces;
+      /** Gravitational acceleration (mm/ms^2). */
+      Tensor<1, 3> gravity;
+    };
+  } // namespace model
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,53 @@
+#ifndef rubberdyn_parameters_output_parameters_h
+#define rubberdyn_parameters_output_parameters_h
+
+#include <rubberdyn/postprocess/field_output.h>
+
+#include <string>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace rubberdyn
+{
+  namespace parameters
+  {
+    /**
+     * The `Output` subsection: where results go, how often the time history,
+     * the ParaView series and checkpoints are written, and restart.
+     */
+    struct Output
+    {
+      /** Directory for all results. */
+      std::string directory = "output";
+      /** Time between ParaView outputs (ms); 0: none. */
+      double field_output_interval = 1.;
+      /** vtu or hdf5. */
+      postprocess::FieldOutput::Format field_output_format =
+        postprocess::FieldOutput::Format::vtu;
+      /** Time between rows of time_history.csv (ms); 0: every step. */
+      double history_output_interval = 0.05;
+      /** Print every history row to the log too. */
+      bool echo_history = false;
+      /** Time between checkpoints (ms); 0: none. */
+      double checkpoint_interval = 0.;
+      /** Continue from the checkpoint in the output directory. */
+      bool restart = false;
+
+      /**
+       * Declare the entries in subsection `Output`. (`Output directory`
+       * is declared here too: every study writes somewhere.)
+       */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** Read them back (from the top level of @p prm). */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace parameters
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,78 @@
+#ifndef rubberdyn_postprocess_field_output_writer_h
+#define rubberdyn_postprocess_field_output_writer_h
+
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/postprocess/field_output.h>
+#include <rubberdyn/postprocess/postprocessor.h>
+
+#include <limits>
+#include <string>
+
+namespace rubberdyn
+{
+  namespace postprocess
+  {
+    /**
+     * The ParaView series as a postprocessor: at every `Field output
+     * interval` and at the end of the run it writes the displacement and
+     * velocity, the cell averages of the Cauchy stress, von Mises stress,
+     * pressure and J, and per cell the MPI rank, the part id (index in the
+     * model's part list) and the material id. It also tracks the smallest
+     * Jacobian determinants at its output times (run_summary.json).
+     */
+    class FieldOutputWriter : public Postprocessor
+    {
+    public:
+      /**
+       * @param interval Time between outputs (ms); 0: only the last state.
+       */
+      FieldOutputWriter(const std::string &      directory,
+                        const std::string &      basename,
+                        const FieldOutput::Format format,
+                        const double             interval,
+                        const MPI_Comm           comm);
+
+      std::string
+      name() const override;
+
+      void
+      after_step(const SimulationView &view) override;
+
+      void
+      finish(const SimulationView &view) override;
+
+      void
+      summary(const SimulationView &     view,
+              std::vector<SummaryEntry> &entries) override;
+
+      void
+      save(std::ostream &out) const override;
+
+      void
+      load(std::istream &in) override;
+
+      /** Write the current state now (collective). */
+      void
+      write(const SimulationView &view);
+
+      /** The index file ParaView opens. */
+      std::string
+      index_file() const;
+
+    private:
+      FieldOutput fields;
+      double      interval;
+      MPI_Comm    comm;
+      double      next_output = 0.;
+      /** Time of the last output, so that the end state is not repeated. */
+      double last_output_time = -1.;
+      double min_jacobian_gauss_points =
+        std::numeric_limits<double>::max();
+      double min_jacobian_centres = std::numeric_limits<double>::max();
+      double time_of_min_jacobian = 0.;
+    };
+  } // namespace postprocess
+} // namespace rubberdyn
+
+#endif

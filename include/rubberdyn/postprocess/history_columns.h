@@ -1,0 +1,126 @@
+#ifndef rubberdyn_postprocess_history_columns_h
+#define rubberdyn_postprocess_history_columns_h
+
+#include <rubberdyn/postprocess/postprocessor.h>
+
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace postprocess
+  {
+    /**
+     * The energy columns of time_history.csv (J): kinetic_energy,
+     * internal_energy, external_work, contact_work, bulk_viscosity_work,
+     * then added_mass (kg) and energy_error (-), and optionally
+     * friction_work (J).
+     */
+    class EnergyColumns : public Postprocessor
+    {
+    public:
+      explicit EnergyColumns(const bool with_friction_work);
+
+      std::string
+      name() const override;
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      bool with_friction_work;
+    };
+
+
+    /**
+     * The reaction of every boundary condition on the body (LS-DYNA's
+     * BNDOUT): `<bc>_force_x/_y/_z` (kN) and `<bc>_moment_x/_y/_z` (kN mm
+     * about the condition's moment point, with the nodes' current
+     * positions).
+     */
+    class BoundaryReactionColumns : public Postprocessor
+    {
+    public:
+      /**
+       * @param names Name of each boundary condition.
+       * @param condition_of_group For each constraint group of the solver,
+       *   the index of its condition.
+       * @param direction_of_group For each group, its direction (0, 1, 2).
+       */
+      BoundaryReactionColumns(
+        const std::vector<std::string> & names,
+        const std::vector<unsigned int> &condition_of_group,
+        const std::vector<unsigned int> &direction_of_group);
+
+      std::string
+      name() const override;
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      std::vector<std::string>  names;
+      std::vector<unsigned int> condition_of_group, direction_of_group;
+    };
+
+
+    /**
+     * Per part (LS-DYNA's MATSUM): `<part>_kinetic_energy`,
+     * `<part>_internal_energy` (J) and `<part>_momentum_x/_y/_z` (kg mm/ms).
+     */
+    class PartColumns : public Postprocessor
+    {
+    public:
+      std::string
+      name() const override;
+
+      /** Needs the model's part names: set by the constructor. */
+      explicit PartColumns(const std::vector<std::string> &part_names);
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      std::vector<std::string> part_names;
+    };
+
+
+    /**
+     * Per rigid surface (its body): `<name>_position_x/_y/_z` (mm, of its
+     * reference point), `<name>_velocity_x/_y/_z` (mm/ms) and
+     * `<name>_force_x/_y/_z` (kN, the force of the solid on it).
+     */
+    class RigidBodyColumns : public Postprocessor
+    {
+    public:
+      std::string
+      name() const override;
+
+      explicit RigidBodyColumns(const std::vector<std::string> &body_names);
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      std::vector<std::string> body_names;
+    };
+  } // namespace postprocess
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,40 @@
+#!/bin/bash
+# Regenerate every .msh of this folder from its .geo with Gmsh, as Gmsh's
+# ASCII format 2.2: bash parameter_files/meshes/regenerate.sh
+#
+# The shipped files were made with Debian 12's gmsh 4.8.4 (apt-get install
+# gmsh); with it, the output is byte-identical (check with git diff).
+# Another Gmsh version may number nodes differently or round differently.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+if ! command -v gmsh > /dev/null; then
+  echo "regenerate.sh: gmsh not found (Debian: apt-get install gmsh)" >&2
+  exit 1
+fi
+version=$(gmsh --version 2>&1)
+if [ "$version" != "4.8.4" ]; then
+  echo "regenerate.sh: warning: gmsh $version, the shipped meshes were" \
+    "made with 4.8.4; the output may differ" >&2
+fi
+
+# Gmsh reads the user's option files ($HOME/.gmshrc, $HOME/.gmsh-options):
+# run it with an empty home so that they cannot change the output, and set
+# every option the output depends on.
+home=$(mktemp -d)
+trap 'rm -rf "$home"' EXIT
+
+for geo in *.geo; do
+  msh="${geo%.geo}.msh"
+  log=$(HOME="$home" gmsh "$geo" -3 -nopopup -v 4 -nt 1 \
+    -format msh22 \
+    -setnumber Mesh.Binary 0 \
+    -setnumber Mesh.SaveAll 0 \
+    -setnumber Mesh.SaveParametric 0 \
+    -o "$msh" 2>&1) || { echo "$log" >&2; exit 1; }
+  if grep -q "Error" <<< "$log"; then
+    echo "$log" >&2
+    exit 1
+  fi
+  echo "$msh: $(grep -o '[0-9]* nodes [0-9]* elements' <<< "$log" | tail -1)"
+done

@@ -1,0 +1,77 @@
+#include <rubberdyn/base/binary_io.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
+
+#include <algorithm>
+
+namespace rubberdyn
+{
+  namespace contact
+  {
+    RigidSurfaceForces::RigidSurfaceForces(
+      RigidSurfaceContact &            contact,
+      const std::vector<unsigned int> &body_of_surface)
+      : contact(contact)
+      , body_of_surface(body_of_surface)
+      , surface_displacement(body_of_surface.size())
+    {}
+
+
+
+    std::string
+    RigidSurfaceForces::name() const
+    {
+      return "rigid-surface contact";
+    }
+
+
+
+    model::ForceContribution::Accumulation
+    RigidSurfaceForces::accumulation() const
+    {
+      return Accumulation::external_owned;
+    }
+
+
+
+    void
+    RigidSurfaceForces::add_forces(const model::EvaluationPoint &point,
+                                   VectorType &                  f,
+                                   model::ContributionResults &  results)
+    {
+      for (unsigned int s = 0; s < body_of_surface.size(); ++s)
+        {
+          AssertIndexRange(body_of_surface[s], point.bodies.size());
+          surface_displacement[s] =
+            point.bodies[body_of_surface[s]].displacement;
+        }
+      contact.add_forces(point.displacement, surface_displacement, f,
+                         contact_result);
+      results.contact_energy += contact_result.penalty_energy;
+      results.friction_dissipation += contact_result.friction_dissipation;
+      for (unsigned int s = 0; s < body_of_surface.size(); ++s)
+        results.force_on_body[body_of_surface[s]] +=
+          contact_result.force_on_plane[s];
+      results.contact_time_step =
+        std::min(results.contact_time_step,
+                 contact.stable_time_step(point.mass));
+    }
+
+
+
+    void
+    RigidSurfaceForces::save(std::ostream &out) const
+    {
+      const std::vector<double> &state = contact.state();
+      binary_io::write_doubles(out, state.data(), state.size());
+    }
+
+
+
+    void
+    RigidSurfaceForces::load(std::istream &in)
+    {
+      std::vector<double> &state = contact.state();
+      binary_io::read_doubles(in, state.data(), state.size(), "contact state");
+    }
+  } // namespace contact
+} // namespace rubberdyn

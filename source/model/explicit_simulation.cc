@@ -1,0 +1,342 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
+#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/postprocess/history_columns.h>
+#include <rubberdyn/postprocess/time_history.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    using time_integration::KinematicConstraints;
+
+    std::string
+    ExplicitSimulation::model_parameters_text(const ParameterHandler &prm)
+    {
+      std::ostringstream all;
+      prm.print_parameters(all, ParameterHandler::ShortPRM);
+      std::istringstream lines(all.str());
+      std::string        line, text;
+      unsigned int       output_depth = 0;
+      while (std::getline(lines, line))
+        {
+          const auto        first = line.find_first_not_of(' ');
+          const std::string entry =
+            first == std::string::npos ? "" : line.substr(first);
+          if (output_depth > 0)
+            {
+              if (entry.rfind("subsection", 0) == 0)
+                ++output_depth;
+              else if (entry == "end")
+                --output_depth;
+              continue;
+            }
+          if (entry == "subsection Output")
+            {
+              output_depth = 1;
+              continue;
+            }
+          if (entry.rfind("set End time", 0) == 0 || entry.empty() ||
+              entry[0] == '#')
+            continue;
+          text += entry + '\n';
+        }
+      return text;
+    }
+
+
+
+    namespace
+    {
+      /**
+       * Lumped (row-sum) physical mass of each part's elements per dof
+       * (kg; ghosted, compressed): integral of rho N_a over the part.
+       */
+      std::vector<VectorType>
+      part_masses(const Model &model)
+      {
+        std::vector<VectorType> masses(model.parts.size());
+        for (VectorType &m : masses)
+          m.reinit(model.partitioner);
+        FEValues<3> fe_values(model.fe, QGauss<3>(2),
+                              update_values | update_JxW_values);
+        const unsigned int n_dofs = model.fe.n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_dofs);
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const unsigned int p =
+                model.part_of_material_id(cell->material_id());
+              const double density = model.parts[p].law->density();
+              fe_values.reinit(cell);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const unsigned int component =
+                    model.fe.system_to_component_index(i).first;
+                  double m = 0.;
+                  for (const unsigned int q :
+                       fe_values.quadrature_point_indices())
+                    m += density *
+                         fe_values.shape_value_component(i, q, component) *
+                         fe_values.JxW(q);
+                  masses[p](dofs[i]) += m;
+                }
+            }
+        for (VectorType &m : masses)
+          m.compress(VectorOperation::add);
+        return masses;
+      }
+
+      constexpr const char *component_names[3] = {"x", "y", "z"};
+    } // namespace
+
+
+
+    ExplicitSimulation::ExplicitSimulation(
+      Model &                             model,
+      const parameters::TimeIntegration &time_integration,
+      const parameters::Output &          output,
+      const std::string &                 title,
+      const std::string &                 model_parameters)
+      : model(model)
+      , time_integration(time_integration)
+      , output(output)
+      , title(title)
+      , model_parameters(model_parameters)
+    {
+      const MPI_Comm comm = model.comm;
+
+      // Elements of every part.
+      std::map<types::material_id, const materials::MaterialModel<3> *>
+        material_by_id;
+      for (const Part &part : model.parts)
+        for (const types::material_id id : part.material_ids)
+          material_by_id[id] = part.law.get();
+      for (const Part &part : model.parts)
+        if (part.formulation != model.parts[0].formulation)
+          throw InputError("Parts/" + part.name + "/Element formulation",
+                           "all parts must use the same element formulation "
+                           "for now");
+      elements = std::make_unique<elements::SolidHexElements>();
+      elements->initialize(
+        model.dof_handler, model.partitioner, material_by_id,
+        {model.parts.empty() ? elements::Formulation::fbar :
+                               model.parts[0].formulation,
+         time_integration.bulk_viscosity_linear,
+         time_integration.bulk_viscosity_quadratic,
+         time_integration.fbar_stabilization});
+
+      // Mass scaling: elements whose stable step is below the target get
+      // added density.
+      std::vector<double> density_scaling(elements->n_elements(), 1.);
+      if (time_integration.mass_scaling_time_step > 0.)
+        {
+          const std::vector<double> steps = elements->reference_time_steps();
+          for (unsigned int e = 0; e < steps.size(); ++e)
+            {
+              const double step = time_integration.time_step_scale * steps[e];
+              if (step < time_integration.mass_scaling_time_step)
+                density_scaling[e] =
+                  std::pow(time_integration.mass_scaling_time_step / step, 2);
+            }
+        }
+      element_forces =
+        std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
+      added_mass_by_part = elements->mass_by_law(density_scaling);
+      {
+        const std::vector<double> physical = elements->mass_by_law(
+          std::vector<double>(density_scaling.size(), 1.));
+        for (unsigned int i = 0; i < added_mass_by_part.size(); ++i)
+          added_mass_by_part[i] -= physical[i];
+        Utilities::MPI::sum(ArrayView<const double>(added_mass_by_part),
+                            comm,
+                            ArrayView<double>(added_mass_by_part));
+      }
+
+      // One contact per rigid surface, each surface carried by its body.
+      std::vector<double> bulk_modulus_by_material;
+      for (const Part &part : model.parts)
+        for (const types::material_id id : part.material_ids)
+          {
+            if (bulk_modulus_by_material.size() <= id)
+              bulk_modulus_by_material.resize(id + 1, 0.);
+            bulk_modulus_by_material[id] = part.law->bulk_modulus();
+          }
+      std::vector<model::ForceContribution *> contributions = {
+        element_forces.get()};
+      for (unsigned int s = 0; s < model.rigid_surfaces.size(); ++s)
+        {
+          const RigidSurfaceDefinition &definition = model.rigid_surfaces[s];
+          contacts.push_back(std::make_unique<contact::RigidSurfaceContact>());
+          contacts.back()->initialize(model.dof_handler,
+                                      model.partitioner,
+                                      definition.boundary_ids,
+                                      bulk_modulus_by_material,
+                                      definition.penalty_scale,
+                                      {definition.surface});
+          contact_forces.push_back(
+            std::make_unique<contact::RigidSurfaceForces>(*contacts.back(),
+                                                          std::vector<unsigned int>{s}));
+          contributions.push_back(contact_forces.back().get());
+          bodies.push_back(definition.body);
+        }
+
+      // Boundary conditions: one constraint group per component.
+      constraints =
+        std::make_unique<KinematicConstraints>(model.dof_handler,
+                                               model.partitioner);
+      for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+        {
+          const BoundaryCondition &bc   = model.boundary_conditions[c];
+          const std::string        path = "Boundary conditions/" + bc.name;
+          const auto zero = [](const Point<3> &, double) { return 0.; };
+          const auto add  = [&](const unsigned int                    direction,
+                               const KinematicConstraints::Kind      kind,
+                               const KinematicConstraints::Function &function,
+                               const bool depends_on_position) {
+            constraints->prescribe(path, bc.boundary_ids, direction, kind,
+                                   function, depends_on_position,
+                                   bc.moment_point);
+            condition_of_group.push_back(c);
+            direction_of_group.push_back(direction);
+          };
+          switch (bc.type)
+            {
+              case BoundaryCondition::Type::fixed:
+                for (const unsigned int d : bc.components)
+                  add(d, KinematicConstraints::Kind::velocity, zero, false);
+                break;
+              case BoundaryCondition::Type::displacement:
+              case BoundaryCondition::Type::velocity:
+                for (unsigned int k = 0; k < bc.components.size(); ++k)
+                  add(bc.components[k],
+                      bc.type == BoundaryCondition::Type::velocity ?
+                        KinematicConstraints::Kind::velocity :
+                        KinematicConstraints::Kind::displacement,
+                      bc.functions[k],
+                      bc.depends_on_position);
+                break;
+              case BoundaryCondition::Type::symmetry:
+                add(constraints->plane_normal_direction(path, bc.boundary_ids),
+                    KinematicConstraints::Kind::velocity,
+                    zero,
+                    false);
+                break;
+            }
+        }
+
+      time_integration::ExplicitSettings settings;
+      settings.time_step_scale   = time_integration.time_step_scale;
+      settings.minimum_time_step = time_integration.minimum_time_step;
+      settings.gravity           = model.gravity;
+      settings.n_groups          = std::max<unsigned int>(1, model.parts.size());
+      explicit_solver = std::make_unique<time_integration::ExplicitSolver>(
+        model.dof_handler, contributions, bodies, constraints.get(),
+        model.partitioner, settings, comm);
+      if (model.parts.size() > 1)
+        explicit_solver->set_group_masses(part_masses(model));
+
+      // Initial velocities of the parts (a node shared by two parts takes
+      // the velocity of the later one).
+      VectorType initial_velocity(model.partitioner);
+      {
+        const unsigned int n_dofs = model.fe.n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_dofs);
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() || cell->is_ghost())
+            {
+              const Part &part =
+                model.parts[model.part_of_material_id(cell->material_id())];
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                if (model.partitioner->in_local_range(dofs[i]))
+                  initial_velocity(dofs[i]) =
+                    part.initial_velocity
+                      [model.fe.system_to_component_index(i).first];
+            }
+      }
+      explicit_solver->set_initial_velocity(initial_velocity);
+    }
+
+
+
+    ExplicitSimulation::~ExplicitSimulation() = default;
+
+
+
+    const time_integration::ExplicitSolver &
+    ExplicitSimulation::solver() const
+    {
+      return *explicit_solver;
+    }
+
+
+
+    void
+    ExplicitSimulation::add_standard_postprocessors()
+    {
+      add_postprocessor(std::make_unique<postprocess::EnergyColumns>(true));
+      std::vector<std::string> names;
+      for (const BoundaryCondition &bc : model.boundary_conditions)
+        names.push_back(bc.name);
+      add_postprocessor(std::make_unique<postprocess::BoundaryReactionColumns>(
+        names, condition_of_group, direction_of_group));
+      names.clear();
+      for (const Part &part : model.parts)
+        names.push_back(part.name);
+      add_postprocessor(std::make_unique<postprocess::PartColumns>(names));
+      names.clear();
+      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+        names.push_back(surface.name);
+      add_postprocessor(std::make_unique<postprocess::RigidBodyColumns>(names));
+    }
+
+
+
+    void
+    ExplicitSimulation::add_postprocessor(
+      std::unique_ptr<postprocess::Postprocessor> plugin)
+    {
+      postprocessors.push_back(std::move(plugin));
+    }
+
+
+
+    void
+    ExplicitSimulation::log_model(std::ostream &log) const
+    {
+      if (Utilities::MPI::this_mpi_process(model.comm) != 0)
+        return;
+      log << title << ": " << model.triangulation.n_global_active_cells()
+          << " cells, " << model.dof_handler.n_dofs() << " dofs, "
+          << Utilities::MPI::n_mpi_processes(model.comm) << " ranks\n";
+      for (const Part &part : model.parts)
+        {
+          log << "  " << part.name << ": ";
+          part.law->print_constants(log);
+        }
+      log << "  Lumped mass " << explicit_solver->physical_mass()
+          << " kg, added mass " << explicit_solver->added_mass() << " kg (";
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        log << (p > 0 ? ", " : "") << model.parts[p].name << " "
+            << (p < added_mass_by_part.size() ? added_mass_by_part[p] : 0.)
+            << " kg";
+      log << ")" << std::endl;
+    }
+  } // namespace model
+} // namespace rubberdyn

@@ -1,0 +1,569 @@
+// The run loop, output and checkpoints of model::ExplicitSimulation (the
+// set-up is in explicit_simulation.cc).
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/base/binary_io.h>
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/elements/solid_hex_forces.h>
+#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/postprocess/field_output_writer.h>
+#include <rubberdyn/postprocess/time_history.h>
+#include <rubberdyn/postprocess/time_history_plot.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    namespace
+    {
+      /** Thrown by the monitor when a postprocessor asks to stop. */
+      struct StopRequested
+      {};
+
+      constexpr char rank_file_magic[8] = "RDYNRK1";
+
+      /**
+       * If any rank has a non-empty @p message, throw an InputError with
+       * the first one on every rank (a failure on one rank must end all
+       * ranks, never leave the others waiting in a collective).
+       */
+      void
+      throw_if_any(const MPI_Comm     comm,
+                   const std::string &entry,
+                   const std::string &message)
+      {
+        for (const std::string &m : Utilities::MPI::all_gather(comm, message))
+          if (!m.empty())
+            throw InputError(entry, m);
+      }
+
+      /** Write @p data to @p path and fsync it. */
+      void
+      write_durably(const std::string &path, const std::string &data)
+      {
+        std::FILE *file = std::fopen(path.c_str(), "wb");
+        if (file == nullptr)
+          throw std::runtime_error("cannot write " + path);
+        const bool written =
+          std::fwrite(data.data(), 1, data.size(), file) == data.size() &&
+          std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+        std::fclose(file);
+        if (!written)
+          throw std::runtime_error("cannot write " + path);
+      }
+
+      /** fsync a directory, so that renames in it are durable. */
+      void
+      sync_directory(const std::string &path)
+      {
+        const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY);
+        if (fd >= 0)
+          {
+            ::fsync(fd);
+            ::close(fd);
+          }
+      }
+
+      std::string
+      json_number(const double value)
+      {
+        if (!std::isfinite(value))
+          return "null";
+        std::ostringstream s;
+        s << std::setprecision(9) << value;
+        return s.str();
+      }
+    } // namespace
+
+
+
+    void
+    ExplicitSimulation::write_history_plot(
+      const std::vector<std::string> &columns) const
+    {
+      const auto ends_with = [](const std::string &text,
+                                const std::string &suffix) {
+        return text.size() >= suffix.size() &&
+               text.compare(text.size() - suffix.size(), suffix.size(),
+                            suffix) == 0;
+      };
+      postprocess::PlotPanel energies{"Energy balance",
+                                      "energy (J)",
+                                      {"kinetic_energy", "internal_energy",
+                                       "external_work", "contact_work",
+                                       "bulk_viscosity_work",
+                                       "friction_work"}};
+      postprocess::PlotPanel forces{"Reactions and contact forces",
+                                    "force (kN)",
+                                    {}};
+      postprocess::PlotPanel displacements{"Displacements",
+                                           "displacement (mm)",
+                                           {}};
+      for (const std::string &column : columns)
+        {
+          if (ends_with(column, "_force") || ends_with(column, "_force_x") ||
+              ends_with(column, "_force_y") || ends_with(column, "_force_z"))
+            forces.columns.push_back(column);
+          if (ends_with(column, "_displacement"))
+            displacements.columns.push_back(column);
+        }
+      std::vector<postprocess::PlotPanel> panels = {energies};
+      for (const postprocess::PlotPanel &panel : {forces, displacements})
+        if (!panel.columns.empty())
+          panels.push_back(panel);
+      postprocess::write_time_history_plot(output.directory +
+                                             "/time_history.csv",
+                                           output.directory +
+                                             "/time_history.svg",
+                                           panels);
+    }
+
+
+
+    void
+    ExplicitSimulation::check(std::ostream &log)
+    {
+      log_model(log);
+      // The first stable step: the solver's first evaluation, without
+      // advancing (a run to t = 0 evaluates nothing), so estimate it by
+      // one step on a copy is not possible; report the elements' reference
+      // steps instead.
+      const std::vector<double> steps = elements->reference_time_steps();
+      double smallest = std::numeric_limits<double>::max();
+      for (unsigned int e = 0; e < steps.size(); ++e)
+        smallest = std::min(smallest,
+                            steps[e] *
+                              std::sqrt(element_forces->density_scaling()[e]));
+      smallest = Utilities::MPI::min(smallest, model.comm);
+      if (Utilities::MPI::this_mpi_process(model.comm) == 0)
+        log << "  Smallest element time step " << smallest
+            << " ms (reference configuration, before the scale factor "
+            << time_integration.time_step_scale << ")" << std::endl;
+    }
+
+
+
+    void
+    ExplicitSimulation::write_checkpoint(const unsigned long history_rows,
+                                         const unsigned int  restarts)
+    {
+      namespace fs            = std::filesystem;
+      const MPI_Comm     comm = model.comm;
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const std::string  directory     = output.directory + "/checkpoint";
+      const std::string  new_directory = directory + ".new";
+      const std::string  old_directory = directory + ".old";
+      std::string        error;
+      if (rank == 0)
+        try
+          {
+            fs::remove_all(new_directory);
+            fs::create_directories(new_directory);
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      throw_if_any(comm, "Output/Checkpoint interval", error);
+
+      // Every rank: its state with the step and time it belongs to.
+      const time_integration::ExplicitSolver &s = *explicit_solver;
+      try
+        {
+          std::ostringstream out;
+          out.write(rank_file_magic, sizeof(rank_file_magic));
+          const double header[5] = {double(s.step()), s.time(), next_history,
+                                    next_checkpoint, max_energy_error};
+          binary_io::write_doubles(out, header, 5);
+          s.save(out);
+          for (const auto &plugin : postprocessors)
+            plugin->save(out);
+          write_durably(new_directory + "/rank_" + std::to_string(rank) +
+                          ".bin",
+                        out.str());
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+      throw_if_any(comm, "Output/Checkpoint interval", error);
+
+      // Rank 0: the rows written so far made durable, then study.txt, then
+      // the switch: the checkpoint becomes current only once all its
+      // pieces are on disk.
+      if (rank == 0)
+        try
+          {
+            history->make_durable();
+            std::ostringstream study;
+            study << std::setprecision(17) << "time " << s.time() << '\n'
+                  << "step " << s.step() << '\n'
+                  << "ranks " << Utilities::MPI::n_mpi_processes(comm) << '\n'
+                  << "history_rows " << history_rows << '\n'
+                  << "restarts " << restarts << '\n'
+                  << "model parameters\n"
+                  << model_parameters;
+            write_durably(new_directory + "/study.txt", study.str());
+            sync_directory(new_directory);
+            fs::remove_all(old_directory);
+            if (fs::exists(directory))
+              fs::rename(directory, old_directory);
+            fs::rename(new_directory, directory);
+            sync_directory(output.directory);
+            fs::remove_all(old_directory);
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      throw_if_any(comm, "Output/Checkpoint interval", error);
+    }
+
+
+
+    std::pair<unsigned long, unsigned int>
+    ExplicitSimulation::read_checkpoint_header()
+    {
+      namespace fs = std::filesystem;
+      const std::string entry = "Output/Restart from checkpoint";
+      checkpoint_directory    = output.directory + "/checkpoint";
+      // Killed between the two renames of write_checkpoint(): the previous
+      // checkpoint is complete under the old name.
+      if (!fs::exists(checkpoint_directory) &&
+          fs::exists(checkpoint_directory + ".old"))
+        checkpoint_directory += ".old";
+      const std::string path = checkpoint_directory + "/study.txt";
+      std::ifstream     study(path);
+      if (!study)
+        throw InputError(entry, "there is no complete checkpoint in " +
+                                  output.directory + "/checkpoint");
+      std::string   key[5];
+      double        time_value;
+      unsigned long step, ranks, rows;
+      unsigned int  restarts;
+      study >> key[0] >> time_value >> key[1] >> step >> key[2] >> ranks >>
+        key[3] >> rows >> key[4] >> restarts;
+      if (!study || key[0] != "time" || key[1] != "step" ||
+          key[2] != "ranks" || key[3] != "history_rows" || key[4] != "restarts")
+        throw InputError(entry, path + " is damaged");
+      std::string line, stored_parameters;
+      std::getline(study, line); // the end of the last number's line
+      std::getline(study, line);
+      if (line != "model parameters")
+        throw InputError(entry, path + " is damaged");
+      while (std::getline(study, line))
+        stored_parameters += line + '\n';
+      if (stored_parameters != model_parameters)
+        {
+          // Name the first entry that differs.
+          std::istringstream stored(stored_parameters), now(model_parameters);
+          std::string        a, b;
+          while (std::getline(stored, a) && std::getline(now, b) && a == b)
+            ;
+          throw InputError(entry,
+                           "the model differs from the checkpoint's ('" + b +
+                             "' here, '" + a +
+                             "' there); only End time and the Output "
+                             "settings may change on a restart");
+        }
+      if (ranks != Utilities::MPI::n_mpi_processes(model.comm))
+        throw InputError(entry, "the checkpoint was written by " +
+                                  std::to_string(ranks) +
+                                  " ranks; restart with as many");
+      checkpoint_step = step;
+      checkpoint_time = time_value;
+      return {rows, restarts};
+    }
+
+
+
+    void
+    ExplicitSimulation::read_checkpoint_state()
+    {
+      const MPI_Comm     comm  = model.comm;
+      const std::string  entry = "Output/Restart from checkpoint";
+      const std::string  path =
+        checkpoint_directory + "/rank_" +
+        std::to_string(Utilities::MPI::this_mpi_process(comm)) + ".bin";
+      std::string error;
+      double      header[5] = {-1., 0., 0., 0., 0.};
+      try
+        {
+          std::ifstream in(path, std::ios::binary);
+          if (!in)
+            throw std::runtime_error("cannot read");
+          char magic[sizeof(rank_file_magic)] = {};
+          in.read(magic, sizeof(magic));
+          if (!in || std::string(magic) != rank_file_magic)
+            throw std::runtime_error("not a rubberdyn checkpoint");
+          binary_io::read_doubles(in, header, 5, "step and time");
+          explicit_solver->load(in);
+          for (const auto &plugin : postprocessors)
+            plugin->load(in);
+          if (in.peek() != std::char_traits<char>::eof())
+            throw std::runtime_error("it holds more data than this model has");
+        }
+      catch (const std::exception &e)
+        {
+          error = path + ": " + e.what();
+        }
+      throw_if_any(comm, entry, error);
+      // All pieces must belong to one step, the one study.txt names.
+      const double lowest  = Utilities::MPI::min(header[0], comm);
+      const double highest = Utilities::MPI::max(header[0], comm);
+      if (lowest != highest || lowest != double(checkpoint_step) ||
+          explicit_solver->step() != checkpoint_step ||
+          explicit_solver->time() != checkpoint_time)
+        throw InputError(entry,
+                         "the pieces of the checkpoint in " +
+                           checkpoint_directory +
+                           " belong to different steps (" +
+                           std::to_string(static_cast<long>(lowest)) + " to " +
+                           std::to_string(static_cast<long>(highest)) +
+                           ", study.txt: " + std::to_string(checkpoint_step) +
+                           "); it is torn and cannot be used");
+      next_history     = header[2];
+      next_checkpoint  = header[3];
+      max_energy_error = header[4];
+    }
+
+
+
+    void
+    ExplicitSimulation::run(std::ostream &log)
+    {
+      namespace fs          = std::filesystem;
+      const MPI_Comm comm   = model.comm;
+      const bool     root   = Utilities::MPI::this_mpi_process(comm) == 0;
+      const auto wall_start = std::chrono::steady_clock::now();
+      time_integration::ExplicitSolver &s = *explicit_solver;
+
+      log_model(log);
+      fs::create_directories(output.directory);
+
+      // The restart's header first: it names the ParaView series.
+      unsigned long history_rows = 0;
+      unsigned int  restarts     = 0;
+      if (output.restart)
+        {
+          std::string message;
+          try
+            {
+              std::tie(history_rows, restarts) = read_checkpoint_header();
+            }
+          catch (const InputError &e)
+            {
+              message = e.message;
+            }
+          throw_if_any(comm, "Output/Restart from checkpoint", message);
+          ++restarts;
+        }
+      auto field_writer = std::make_unique<postprocess::FieldOutputWriter>(
+        output.directory,
+        restarts == 0 ? "solution" :
+                        "solution_restart_" + std::to_string(restarts),
+        output.field_output_format,
+        output.field_output_interval,
+        comm);
+      postprocess::FieldOutputWriter &fields = *field_writer;
+      postprocessors.insert(postprocessors.begin(), std::move(field_writer));
+      next_history     = 0.;
+      next_checkpoint  = output.checkpoint_interval;
+      max_energy_error = 0.;
+
+      std::vector<std::string> columns = {"time", "time_step"};
+      for (const auto &plugin : postprocessors)
+        for (const std::string &column : plugin->history_columns())
+          columns.push_back(column);
+      const std::string history_path = output.directory + "/time_history.csv";
+      if (output.restart)
+        {
+          read_checkpoint_state();
+          // Only now, with the checkpoint accepted, the history is cut to
+          // the rows written before it.
+          std::string message;
+          try
+            {
+              history = std::make_unique<postprocess::TimeHistory>(
+                history_path, columns, root, history_rows);
+            }
+          catch (const std::exception &e)
+            {
+              message = e.what();
+            }
+          throw_if_any(comm, "Output/Restart from checkpoint", message);
+          if (root)
+            log << "  Restarted from the checkpoint at t = " << s.time()
+                << " ms, step " << s.step() << std::endl;
+        }
+      else
+        history = std::make_unique<postprocess::TimeHistory>(history_path,
+                                                             columns, root);
+
+      const postprocess::SimulationView view{model, s, *elements, bodies};
+      double     last_row_time    = -1.;
+      auto       last_progress    = std::chrono::steady_clock::now();
+      std::vector<double> values;
+      const auto write_row = [&]() {
+        values.assign({s.time(), s.time_step()});
+        for (const auto &plugin : postprocessors)
+          plugin->history_values(view, values);
+        const std::string row = history->write_row(values);
+        if (root && output.echo_history)
+          log << row;
+        last_row_time = s.time();
+      };
+      const auto monitor = [&]() {
+        const double t = s.time();
+        max_energy_error =
+          std::max(max_energy_error, s.energies().absolute_error());
+        if (t >= next_history * (1. - 1e-12))
+          {
+            write_row();
+            next_history += output.history_output_interval;
+          }
+        for (const auto &plugin : postprocessors)
+          plugin->after_step(view);
+        for (const auto &plugin : postprocessors)
+          if (plugin->stop_requested())
+            {
+              if (last_row_time < t)
+                write_row();
+              throw StopRequested();
+            }
+        const auto now = std::chrono::steady_clock::now();
+        if (root && now - last_progress > std::chrono::seconds(5))
+          {
+            const double elapsed =
+              std::chrono::duration<double>(now - wall_start).count();
+            log << "  step " << s.step() << ", t = " << t
+                << " ms, dt = " << s.time_step() << " ms, about "
+                << static_cast<int>(elapsed *
+                                    (time_integration.end_time - t) /
+                                    std::max(t, 1e-12))
+                << " s left" << std::endl;
+            last_progress = now;
+          }
+      };
+
+      bool stopped = false;
+      try
+        {
+          // Run in segments that end at the checkpoint times (a segmented
+          // run is the same arithmetic as an unsegmented one).
+          const double end_time = time_integration.end_time;
+          while (s.time() < end_time * (1. - 1e-12))
+            {
+              const double stop = output.checkpoint_interval > 0. ?
+                                    std::min(end_time, next_checkpoint) :
+                                    end_time;
+              s.run(stop, monitor);
+              if (output.checkpoint_interval > 0. &&
+                  s.time() >= next_checkpoint * (1. - 1e-12))
+                {
+                  next_checkpoint += output.checkpoint_interval;
+                  write_checkpoint(history->n_rows(), restarts);
+                }
+            }
+        }
+      catch (const StopRequested &)
+        {
+          stopped = true;
+        }
+      catch (const time_integration::SolverFailure &failure)
+        {
+          fields.write(view);
+          history->make_durable();
+          throw std::runtime_error(title + " stopped: " + failure.what() +
+                                   "; the last state is in " +
+                                   fields.index_file());
+        }
+      for (const auto &plugin : postprocessors)
+        plugin->finish(view);
+      // The largest error of the run relative to its largest energy.
+      max_energy_error =
+        s.energies().largest_energy > 0. ?
+          max_energy_error / s.energies().largest_energy :
+          0.;
+      // run_summary.json: the run's figures, then the plugins' entries.
+      const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                      wall_start)
+          .count();
+      const double element_cycles =
+        double(model.triangulation.n_global_active_cells()) * s.step();
+      time_integration::StepTimings timings = s.timings();
+      for (double *t : {&timings.element_forces, &timings.contact,
+                        &timings.vector_updates, &timings.communication,
+                        &timings.output})
+        *t = Utilities::MPI::max(*t, comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const auto         per_cycle = [&](const double seconds) {
+        return json_number(1e9 * seconds * n_ranks / element_cycles);
+      };
+      std::vector<postprocess::SummaryEntry> entries = {
+        {"cells", std::to_string(model.triangulation.n_global_active_cells())},
+        {"dofs", std::to_string(model.dof_handler.n_dofs())},
+        {"ranks", std::to_string(n_ranks)},
+        {"time_steps", std::to_string(s.step())},
+        {"end_time", json_number(s.time())},
+        {"stopped_by_postprocessor", stopped ? "true" : "false"},
+        {"wall_seconds", json_number(wall)},
+        {"ns_per_element_cycle",
+         json_number(1e9 * wall * n_ranks / element_cycles)},
+        {"ns_per_element_cycle_breakdown",
+         "{\"element_forces\": " + per_cycle(timings.element_forces) +
+           ", \"contact\": " + per_cycle(timings.contact) +
+           ", \"vector_updates\": " + per_cycle(timings.vector_updates) +
+           ", \"communication\": " + per_cycle(timings.communication) +
+           ", \"output\": " + per_cycle(timings.output) + "}"},
+        {"max_energy_error", json_number(max_energy_error)},
+        {"added_mass_fraction",
+         json_number(s.added_mass() / s.physical_mass())},
+        {"friction_work", json_number(s.energies().friction_work)},
+        {"physical_mass", json_number(s.physical_mass())}};
+      {
+        std::string by_part = "{";
+        for (unsigned int p = 0; p < model.parts.size(); ++p)
+          by_part += (p > 0 ? ", \"" : "\"") + model.parts[p].name +
+                     "\": " + json_number(added_mass_by_part[p]);
+        entries.emplace_back("added_mass_by_part", by_part + "}");
+      }
+      for (const auto &plugin : postprocessors)
+        plugin->summary(view, entries);
+      if (root)
+        {
+          std::ofstream summary(output.directory + "/run_summary.json");
+          summary << "{";
+          for (unsigned int i = 0; i < entries.size(); ++i)
+            summary << (i > 0 ? "," : "") << "\n  \"" << entries[i].first
+                    << "\": " << entries[i].second;
+          summary << "\n}\n";
+          // A picture of the main columns beside the table.
+          history->make_durable();
+          write_history_plot(columns);
+          // Wall time and speed are in run_summary.json only, so that the
+          // log of a run is reproducible.
+          log << "Finished: " << s.step() << " steps to t = " << s.time()
+              << " ms; largest energy error " << max_energy_error * 100.
+              << " %" << std::endl;
+          for (const auto &plugin : postprocessors)
+            plugin->final_log(log);
+          if (max_energy_error > 0.01)
+            log << "WARNING: the energy error exceeded 1 %" << std::endl;
+        }
+    }
+  } // namespace model
+} // namespace rubberdyn

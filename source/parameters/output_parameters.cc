@@ -1,0 +1,75 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <rubberdyn/parameters/output_parameters.h>
+
+namespace rubberdyn
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Output directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for all results; created if missing. "
+                        "Relative paths are relative to the working "
+                        "directory.");
+      prm.declare_entry("Field output interval", "1", Patterns::Double(0.),
+                        "Time between ParaView outputs (ms); 0 writes none.");
+      prm.declare_entry(
+        "Field output format", "vtu",
+        Patterns::Selection(postprocess::FieldOutput::format_names()),
+        "'vtu': per output time a solution_NNNN.pvtu with one .vtu per rank, "
+        "indexed by solution.pvd. 'hdf5' (for large runs): per output time "
+        "one solution_NNNN.h5 written by all ranks in parallel (MPI-IO), "
+        "holding the mesh, the nodal vectors and the cell fields, indexed by "
+        "solution.xdmf. Both open in ParaView as a time series: reference "
+        "mesh with displacement, velocity (nodal), Cauchy stress "
+        "components, von Mises stress, pressure (GPa), J, MPI rank, part "
+        "id and material id (cell values).");
+      prm.declare_entry("Echo time history", "false", Patterns::Bool(),
+                        "Also print every row of time_history.csv to the "
+                        "terminal (for regression tests).");
+      prm.declare_entry("History output interval", "0.05",
+                        Patterns::Double(0.),
+                        "Time between rows of time_history.csv (ms); 0 "
+                        "writes every step.");
+      prm.declare_entry("Checkpoint interval", "0", Patterns::Double(0.),
+                        "Time between checkpoints (ms), written to the "
+                        "directory 'checkpoint' in the output directory (one "
+                        "binary file per rank plus study.txt, each replacing "
+                        "the previous one); 0 writes none.");
+      prm.declare_entry("Restart from checkpoint", "false", Patterns::Bool(),
+                        "Continue from the checkpoint in the output "
+                        "directory instead of starting at t = 0, with the "
+                        "same number of ranks and the same model parameters "
+                        "(End time and the output settings may differ). The "
+                        "run continues exactly as the original would have; "
+                        "time_history.csv keeps its rows before the "
+                        "checkpoint, the ParaView series goes on in "
+                        "solution_restart.pvd (.xdmf).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory             = prm.get("Output directory");
+      field_output_interval = prm.get_double("Field output interval");
+      field_output_format =
+        postprocess::FieldOutput::parse_format(prm.get("Field output format"));
+      history_output_interval = prm.get_double("History output interval");
+      echo_history            = prm.get_bool("Echo time history");
+      checkpoint_interval     = prm.get_double("Checkpoint interval");
+      restart                 = prm.get_bool("Restart from checkpoint");
+      prm.leave_subsection();
+    }
+  } // namespace parameters
+} // namespace rubberdyn

@@ -1,0 +1,222 @@
+#include <rubberdyn/model/rigid_body.h>
+#include <rubberdyn/postprocess/history_columns.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+namespace rubberdyn
+{
+  namespace postprocess
+  {
+    namespace
+    {
+      /** name_x, name_y, name_z. */
+      void
+      add_vector_columns(const std::string &       name,
+                         std::vector<std::string> &columns)
+      {
+        for (const char *suffix : {"_x", "_y", "_z"})
+          columns.push_back(name + suffix);
+      }
+
+      void
+      add_vector_values(const dealii::Tensor<1, 3> &value,
+                        std::vector<double> &       values)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          values.push_back(value[d]);
+      }
+    } // namespace
+
+
+
+    EnergyColumns::EnergyColumns(const bool with_friction_work)
+      : with_friction_work(with_friction_work)
+    {}
+
+
+
+    std::string
+    EnergyColumns::name() const
+    {
+      return "energies";
+    }
+
+
+
+    std::vector<std::string>
+    EnergyColumns::history_columns() const
+    {
+      std::vector<std::string> columns = {"kinetic_energy",
+                                          "internal_energy",
+                                          "external_work",
+                                          "contact_work",
+                                          "bulk_viscosity_work",
+                                          "added_mass",
+                                          "energy_error"};
+      if (with_friction_work)
+        columns.push_back("friction_work");
+      return columns;
+    }
+
+
+
+    void
+    EnergyColumns::history_values(const SimulationView &view,
+                                  std::vector<double> &  values)
+    {
+      const auto &e = view.solver.energies();
+      for (const double value :
+           {e.kinetic, e.internal, e.external_work, e.contact,
+            e.bulk_viscosity_work, view.solver.added_mass(),
+            e.relative_error()})
+        values.push_back(value);
+      if (with_friction_work)
+        values.push_back(e.friction_work);
+    }
+
+
+
+    BoundaryReactionColumns::BoundaryReactionColumns(
+      const std::vector<std::string> & names,
+      const std::vector<unsigned int> &condition_of_group,
+      const std::vector<unsigned int> &direction_of_group)
+      : names(names)
+      , condition_of_group(condition_of_group)
+      , direction_of_group(direction_of_group)
+    {}
+
+
+
+    std::string
+    BoundaryReactionColumns::name() const
+    {
+      return "boundary reactions";
+    }
+
+
+
+    std::vector<std::string>
+    BoundaryReactionColumns::history_columns() const
+    {
+      std::vector<std::string> columns;
+      for (const std::string &bc : names)
+        {
+          add_vector_columns(bc + "_force", columns);
+          add_vector_columns(bc + "_moment", columns);
+        }
+      return columns;
+    }
+
+
+
+    void
+    BoundaryReactionColumns::history_values(const SimulationView &view,
+                                            std::vector<double> &  values)
+    {
+      std::vector<dealii::Tensor<1, 3>> force(names.size()),
+        moment(names.size());
+      const std::vector<double> &reactions = view.solver.reactions();
+      const auto &moments = view.solver.reaction_moments();
+      for (unsigned int g = 0; g < condition_of_group.size(); ++g)
+        {
+          force[condition_of_group[g]][direction_of_group[g]] += reactions[g];
+          moment[condition_of_group[g]] += moments[g];
+        }
+      for (unsigned int c = 0; c < names.size(); ++c)
+        {
+          add_vector_values(force[c], values);
+          add_vector_values(moment[c], values);
+        }
+    }
+
+
+
+    PartColumns::PartColumns(const std::vector<std::string> &part_names)
+      : part_names(part_names)
+    {}
+
+
+
+    std::string
+    PartColumns::name() const
+    {
+      return "part sums";
+    }
+
+
+
+    std::vector<std::string>
+    PartColumns::history_columns() const
+    {
+      std::vector<std::string> columns;
+      for (const std::string &part : part_names)
+        {
+          columns.push_back(part + "_kinetic_energy");
+          columns.push_back(part + "_internal_energy");
+          add_vector_columns(part + "_momentum", columns);
+        }
+      return columns;
+    }
+
+
+
+    void
+    PartColumns::history_values(const SimulationView &view,
+                                std::vector<double> &  values)
+    {
+      const auto &motion   = view.solver.motion_by_group();
+      const auto &internal = view.solver.internal_energy_by_group();
+      for (unsigned int p = 0; p < part_names.size(); ++p)
+        {
+          values.push_back(motion[p].kinetic_energy);
+          values.push_back(internal[p]);
+          add_vector_values(motion[p].momentum, values);
+        }
+    }
+
+
+
+    RigidBodyColumns::RigidBodyColumns(
+      const std::vector<std::string> &body_names)
+      : body_names(body_names)
+    {}
+
+
+
+    std::string
+    RigidBodyColumns::name() const
+    {
+      return "rigid bodies";
+    }
+
+
+
+    std::vector<std::string>
+    RigidBodyColumns::history_columns() const
+    {
+      std::vector<std::string> columns;
+      for (const std::string &body : body_names)
+        {
+          add_vector_columns(body + "_position", columns);
+          add_vector_columns(body + "_velocity", columns);
+          add_vector_columns(body + "_force", columns);
+        }
+      return columns;
+    }
+
+
+
+    void
+    RigidBodyColumns::history_values(const SimulationView &view,
+                                     std::vector<double> &  values)
+    {
+      for (unsigned int b = 0; b < body_names.size(); ++b)
+        {
+          const model::RigidBody &body = view.bodies[b];
+          add_vector_values(body.reference_position + body.displacement,
+                            values);
+          add_vector_values(body.velocity, values);
+          add_vector_values(body.contact_force, values);
+        }
+    }
+  } // namespace postprocess
+} // namespace rubberdyn

@@ -1,0 +1,678 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/io/gmsh_mesh.h>
+#include <rubberdyn/materials/material_registry.h>
+#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/studies/model_study.h>
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <set>
+
+namespace rubberdyn
+{
+  namespace studies
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** The name of the subsection that documents the per-name entries. */
+      const std::string template_name = "<name>";
+
+      /** The names listed under @p path, plus the documenting template. */
+      std::vector<std::string>
+      names_with_template(const registry::ListedNames &names,
+                          const std::string &          path)
+      {
+        std::vector<std::string> result = {template_name};
+        const auto               listed = names.find(path);
+        if (listed != names.end())
+          for (const std::string &name : listed->second)
+            if (name != template_name)
+              result.push_back(name);
+        return result;
+      }
+
+      /** The names of `<path>/Names` as parsed. */
+      std::vector<std::string>
+      listed_names(ParameterHandler &prm)
+      {
+        return Utilities::split_string_list(prm.get("Names"), ',');
+      }
+
+      /** Three numbers "a, b, c" of entry @p path. */
+      Tensor<1, 3>
+      parse_vector(const std::string &text, const std::string &path)
+      {
+        const std::vector<std::string> items =
+          Utilities::split_string_list(text, ',');
+        if (items.size() != 3)
+          throw InputError(path, "needs three numbers separated by commas, "
+                                 "not '" + text.substr(0, 80) + "'");
+        Tensor<1, 3> result;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            try
+              {
+                result[d] = Utilities::string_to_double(items[d]);
+              }
+            catch (...)
+              {
+                throw InputError(path, "'" + items[d].substr(0, 40) +
+                                         "' is not a number");
+              }
+            if (!std::isfinite(result[d]))
+              throw InputError(path, "'" + items[d].substr(0, 40) +
+                                       "' is not a finite number");
+          }
+        return result;
+      }
+
+      /** A list of ids (0-255 for boundary ids). */
+      template <typename Id>
+      std::set<Id>
+      parse_ids(const std::string &text,
+                const std::string &path,
+                const unsigned int largest)
+      {
+        std::set<Id> ids;
+        for (const std::string &item : Utilities::split_string_list(text, ','))
+          {
+            int value = -1;
+            try
+              {
+                value = Utilities::string_to_int(item);
+              }
+            catch (...)
+              {
+                throw InputError(path, "'" + item.substr(0, 40) +
+                                         "' is not a whole number");
+              }
+            if (value < 0 || static_cast<unsigned int>(value) > largest)
+              throw InputError(path, "the id " + item.substr(0, 40) +
+                                       " is outside 0 to " +
+                                       std::to_string(largest));
+            ids.insert(static_cast<Id>(value));
+          }
+        if (ids.empty())
+          throw InputError(path, "lists no id");
+        return ids;
+      }
+
+      /** Directions "x, z" as 0, 2. */
+      std::vector<unsigned int>
+      parse_components(const std::string &text, const std::string &path)
+      {
+        std::vector<unsigned int> components;
+        for (const std::string &item : Utilities::split_string_list(text, ','))
+          {
+            if (item != "x" && item != "y" && item != "z")
+              throw InputError(path, "'" + item.substr(0, 40) +
+                                       "' is not a direction (x, y or z)");
+            const unsigned int d = item[0] - 'x';
+            for (const unsigned int c : components)
+              if (c == d)
+                throw InputError(path, "lists " + item + " twice");
+            components.push_back(d);
+          }
+        if (components.empty())
+          throw InputError(path, "lists no direction");
+        return components;
+      }
+
+      /** Whether @p expression uses one of the variables x, y, z. */
+      bool
+      uses_position(const std::string &expression)
+      {
+        for (std::size_t i = 0; i < expression.size();)
+          if (std::isalpha(static_cast<unsigned char>(expression[i])) ||
+              expression[i] == '_')
+            {
+              std::size_t j = i;
+              while (j < expression.size() &&
+                     (std::isalnum(static_cast<unsigned char>(expression[j])) ||
+                      expression[j] == '_'))
+                ++j;
+              const std::string word = expression.substr(i, j - i);
+              if (word == "x" || word == "y" || word == "z")
+                return true;
+              i = j;
+            }
+          else
+            ++i;
+        return false;
+      }
+
+      /**
+       * A deal.II FunctionParser of x, y, z, t with @p n_components
+       * components separated by ';'.
+       */
+      std::shared_ptr<FunctionParser<3>>
+      make_function(const std::string &expression,
+                    const std::string &constants_text,
+                    const unsigned int n_components,
+                    const std::string &path)
+      {
+        const std::vector<std::string> parts =
+          Utilities::split_string_list(expression, ';');
+        if (parts.size() != n_components)
+          throw InputError(path + "/Function expression",
+                           "has " + std::to_string(parts.size()) +
+                             " components (separated by ';'), but " +
+                             std::to_string(n_components) +
+                             " are needed, one per listed component");
+        std::map<std::string, double> constants;
+        for (const std::string &item :
+             Utilities::split_string_list(constants_text, ','))
+          {
+            const auto equals = item.find('=');
+            if (equals == std::string::npos)
+              throw InputError(path + "/Function constants",
+                               "'" + item.substr(0, 40) +
+                                 "' is not of the form name = value");
+            try
+              {
+                constants[Utilities::trim(item.substr(0, equals))] =
+                  Utilities::string_to_double(
+                    Utilities::trim(item.substr(equals + 1)));
+              }
+            catch (...)
+              {
+                throw InputError(path + "/Function constants",
+                                 "'" + item.substr(0, 40) +
+                                   "' has no numeric value");
+              }
+          }
+        // pi is always known (as in deal.II's own parsed functions).
+        constants.emplace("pi", numbers::PI);
+        auto function = std::make_shared<FunctionParser<3>>(n_components);
+        // deal.II prints muparser's diagnosis to std::cerr before it
+        // throws; the InputError below says it in one line instead.
+        std::ostringstream    diagnosis;
+        std::streambuf *const cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+        try
+          {
+            function->initialize("x,y,z,t", parts, constants, true);
+            // Evaluate once: an undefined name shows only here.
+            function->set_time(0.);
+            for (unsigned int c = 0; c < n_components; ++c)
+              function->value(Point<3>(), c);
+            std::cerr.rdbuf(cerr_buffer);
+          }
+        catch (const ExceptionBase &error)
+          {
+            std::cerr.rdbuf(cerr_buffer);
+            std::ostringstream message;
+            error.print_info(message);
+            std::string text = message.str();
+            for (char &c : text)
+              if (c == '\n')
+                c = ' ';
+            // One space between words.
+            std::string folded;
+            for (const char c : text)
+              if (!(c == ' ' && (folded.empty() || folded.back() == ' ')))
+                folded += c;
+            throw InputError(path + "/Function expression",
+                             "'" + expression.substr(0, 80) +
+                               "' does not parse: " + folded.substr(0, 200));
+          }
+        catch (...)
+          {
+            std::cerr.rdbuf(cerr_buffer);
+            throw InputError(path + "/Function expression",
+                             "'" + expression.substr(0, 80) +
+                               "' does not parse");
+          }
+        return function;
+      }
+    } // namespace
+
+
+
+    void
+    ModelStudy::declare_parameters(ParameterHandler &           prm,
+                                   const registry::ListedNames &names)
+    {
+      prm.enter_subsection("Model");
+      prm.declare_entry("Gravity", "0, 0, 0", Patterns::Anything(),
+                        "Gravitational acceleration (mm/ms^2), three "
+                        "components x, y, z; acts on the parts and on the "
+                        "rigid bodies with mass. Earth: 0, 0, -9.81e-3.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Mesh file", "", Patterns::Anything(),
+                        "Gmsh mesh (.msh, format 2.2 ASCII) of hexahedra; a "
+                        "relative path is relative to the parameter file's "
+                        "folder. Physical volume tags become material ids "
+                        "(name them in Parts/<name>/Material ids), physical "
+                        "surface tags boundary ids (for boundary conditions "
+                        "and rigid surfaces). Tag 0 is reserved.");
+      prm.declare_entry("Global refinement", "0", Patterns::Integer(0, 5),
+                        "Number of global refinements of the mesh (each "
+                        "splits every hexahedron into 8).");
+      prm.declare_entry("Scale", "1", Patterns::Double(0.),
+                        "Factor on the mesh's coordinates, e.g. 1000 for a "
+                        "mesh in m (the model is in mm).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Parts");
+      prm.declare_entry("Names", "", Patterns::Anything(),
+                        "Names of the parts, separated by commas (letters, "
+                        "digits, '_', '-'). Each has a subsection of its "
+                        "name; every cell of the mesh belongs to exactly one "
+                        "part.");
+      for (const std::string &name : names_with_template(names, "Parts"))
+        {
+          prm.enter_subsection(name);
+          prm.declare_entry("Material ids", "", Patterns::Anything(),
+                            "The material ids (Gmsh physical volume tags) of "
+                            "this part's cells, separated by commas.");
+          prm.declare_entry("Element formulation", "F-bar",
+                            Patterns::Selection("F-bar|displacement"),
+                            "'F-bar': volumetric part of F at the element "
+                            "centre (no volumetric locking; for rubber); "
+                            "'displacement': plain trilinear hexahedron.");
+          prm.declare_entry("Initial velocity", "0, 0, 0",
+                            Patterns::Anything(),
+                            "Velocity of the part's nodes at t = 0 (mm/ms), "
+                            "x, y, z.");
+          materials::registry::declare_part_parameters(prm,
+                                                       {"Yeoh", 1.1e-6, 0.499});
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Names", "", Patterns::Anything(),
+                        "Names of the boundary conditions, separated by "
+                        "commas; each has a subsection of its name. The "
+                        "time history gets <name>_force_x/_y/_z (kN) and "
+                        "<name>_moment_x/_y/_z (kN mm): the reaction the "
+                        "condition exerts on the body.");
+      for (const std::string &name :
+           names_with_template(names, "Boundary conditions"))
+        {
+          prm.enter_subsection(name);
+          prm.declare_entry("Boundary ids", "", Patterns::Anything(),
+                            "The boundary ids (Gmsh physical surface tags) "
+                            "of its faces, separated by commas.");
+          prm.declare_entry(
+            "Type", "fixed",
+            Patterns::Selection("fixed|displacement|velocity|symmetry"),
+            "'fixed': zero displacement in the Components; 'displacement': "
+            "u = Function expression (mm); 'velocity': v = Function "
+            "expression (mm/ms); 'symmetry': zero normal displacement of a "
+            "plane face normal to a coordinate axis (Components and the "
+            "function are not used).");
+          prm.declare_entry("Components", "x, y, z", Patterns::Anything(),
+                            "The directions it acts on, from x, y, z, "
+                            "separated by commas.");
+          prm.declare_entry(
+            "Function expression", "0", Patterns::Anything(),
+            "For 'displacement' and 'velocity': one expression per listed "
+            "component, separated by ';', of x, y, z (mm, reference "
+            "position) and t (ms), in deal.II's FunctionParser syntax "
+            "(muparser), e.g. '0.1*t; 0' for two components. Must be 0 "
+            "for the other types.");
+          prm.declare_entry("Function constants", "", Patterns::Anything(),
+                            "Constants used in the expression, e.g. "
+                            "'v0 = 2, h = 10'.");
+          prm.declare_entry("Moment point", "0, 0, 0", Patterns::Anything(),
+                            "Point about which the reaction moment is "
+                            "reported (mm).");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Rigid surfaces");
+      prm.declare_entry("Names", "", Patterns::Anything(),
+                        "Names of the rigid surfaces (plates, pins, holes), "
+                        "separated by commas; each has a subsection of its "
+                        "name and is carried by a rigid body. The time "
+                        "history gets <name>_position_x/_y/_z (mm), "
+                        "<name>_velocity_x/_y/_z (mm/ms) and "
+                        "<name>_force_x/_y/_z (kN, the force of the solid on "
+                        "it).");
+      for (const std::string &name :
+           names_with_template(names, "Rigid surfaces"))
+        {
+          prm.enter_subsection(name);
+          prm.declare_entry(
+            "Shape", "plane",
+            Patterns::Selection("plane|cylinder with the solid outside|"
+                                "cylinder with the solid inside"),
+            "'plane': the solid stays on the side its Direction points to; "
+            "'cylinder with the solid outside': a rigid pin of the Radius "
+            "around the axis through Point along Direction; 'cylinder with "
+            "the solid inside': a rigid tube or hole.");
+          prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
+                            "A point of the plane, or of the cylinder's axis "
+                            "(mm), at t = 0; its position is reported.");
+          prm.declare_entry("Direction", "0, 0, 1", Patterns::Anything(),
+                            "Plane: its normal, pointing into the solid; "
+                            "cylinder: its axis. Need not be a unit vector.");
+          prm.declare_entry("Radius", "0", Patterns::Double(0.),
+                            "Cylinder radius (mm).");
+          prm.declare_entry("Mass", "0", Patterns::Double(0.),
+                            "Mass of the rigid body (kg); 0: it moves as "
+                            "prescribed by Velocity function (or is held).");
+          prm.declare_entry("Free directions", "", Patterns::Anything(),
+                            "With Mass > 0: the directions in which it moves "
+                            "under contact forces and gravity, from x, y, z; "
+                            "in the others it follows Velocity function.");
+          prm.declare_entry("Initial velocity", "0, 0, 0",
+                            Patterns::Anything(),
+                            "Velocity at t = 0 in its free directions "
+                            "(mm/ms).");
+          prm.declare_entry("Velocity function", "0; 0; 0",
+                            Patterns::Anything(),
+                            "Prescribed velocity (mm/ms) in the directions "
+                            "that are not free: three expressions of t (ms) "
+                            "separated by ';'.");
+          prm.declare_entry("Function constants", "", Patterns::Anything(),
+                            "Constants used in Velocity function.");
+          prm.declare_entry("Boundary ids", "", Patterns::Anything(),
+                            "The boundary ids of the solid faces that may "
+                            "touch it, separated by commas.");
+          prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
+                            "Coulomb friction coefficient towards the solid "
+                            "(-).");
+          prm.declare_entry("Penalty scale factor", "inherit",
+                            Patterns::Anything(),
+                            "Scale of the penalty stiffness s K A^2 / V "
+                            "(-), or 'inherit' for Contact/Penalty scale "
+                            "factor.");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    ModelStudy::ModelStudy(ParameterHandler &prm,
+                           const std::string &parameter_file)
+    {
+      using parameter_tools::require_positive;
+      const std::string model_parameters =
+        model::ExplicitSimulation::model_parameters_text(prm);
+      parameters::TimeIntegration time_integration;
+      parameters::Contact         contact;
+      parameters::Output          output;
+      time_integration.parse_parameters(prm);
+      contact.parse_parameters(prm);
+      output.parse_parameters(prm);
+
+      model = std::make_unique<model::Model>(MPI_COMM_WORLD);
+      model::Model &m = *model;
+
+      prm.enter_subsection("Model");
+      m.gravity = parse_vector(prm.get("Gravity"), "Model/Gravity");
+      prm.leave_subsection();
+
+      // The mesh, relative to the parameter file's folder.
+      prm.enter_subsection("Mesh");
+      std::string mesh_file = prm.get("Mesh file");
+      const unsigned int refinement = prm.get_integer("Global refinement");
+      const double       scale      = prm.get_double("Scale");
+      prm.leave_subsection();
+      if (mesh_file.empty())
+        throw InputError("Mesh/Mesh file", "names no file; a Model needs a "
+                                           "Gmsh mesh");
+      require_positive(scale, "Mesh/Scale");
+      if (std::filesystem::path(mesh_file).is_relative() &&
+          !parameter_file.empty())
+        mesh_file =
+          (std::filesystem::path(parameter_file).parent_path() / mesh_file)
+            .lexically_normal()
+            .string();
+      io::read_gmsh_mesh(m.triangulation, mesh_file, "Mesh/Mesh file");
+      if (scale != 1.)
+        GridTools::scale(scale, m.triangulation);
+      m.triangulation.refine_global(refinement);
+
+      // Material and boundary ids present in the mesh.
+      std::set<types::material_id> material_ids_in_mesh;
+      for (const auto &cell : m.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          material_ids_in_mesh.insert(cell->material_id());
+      {
+        std::vector<types::material_id> local(material_ids_in_mesh.begin(),
+                                               material_ids_in_mesh.end());
+        for (const auto &ids : Utilities::MPI::all_gather(m.comm, local))
+          material_ids_in_mesh.insert(ids.begin(), ids.end());
+      }
+      const std::set<types::boundary_id> boundary_ids_in_mesh =
+        m.boundary_ids_in_mesh();
+      const auto require_boundary_ids =
+        [&](const std::set<types::boundary_id> &ids, const std::string &path) {
+          for (const types::boundary_id id : ids)
+            if (boundary_ids_in_mesh.count(id) == 0)
+              throw InputError(path, "the mesh " + mesh_file +
+                                       " has no boundary face with id " +
+                                       std::to_string(id));
+        };
+
+      // Parts.
+      prm.enter_subsection("Parts");
+      for (const std::string &name : listed_names(prm))
+        {
+          const std::string path = "Parts/" + name;
+          prm.enter_subsection(name);
+          model::Part part;
+          part.name = name;
+          part.material_ids =
+            parse_ids<types::material_id>(prm.get("Material ids"),
+                                          path + "/Material ids",
+                                          numbers::invalid_material_id - 1);
+          for (const types::material_id id : part.material_ids)
+            if (material_ids_in_mesh.count(id) == 0)
+              throw InputError(path + "/Material ids",
+                               "the mesh " + mesh_file +
+                                 " has no cell with material id " +
+                                 std::to_string(id));
+          part.formulation = prm.get("Element formulation") == "F-bar" ?
+                               elements::Formulation::fbar :
+                               elements::Formulation::displacement;
+          part.initial_velocity =
+            parse_vector(prm.get("Initial velocity"), path + "/Initial velocity");
+          part.law = materials::registry::create<3>(prm, path);
+          prm.leave_subsection();
+          m.parts.push_back(std::move(part));
+        }
+      prm.leave_subsection();
+      if (m.parts.empty())
+        throw InputError("Parts/Names", "names no part; every cell of the "
+                                        "mesh must belong to one");
+
+      // Boundary conditions.
+      prm.enter_subsection("Boundary conditions");
+      for (const std::string &name : listed_names(prm))
+        {
+          const std::string path = "Boundary conditions/" + name;
+          prm.enter_subsection(name);
+          model::BoundaryCondition bc;
+          bc.name = name;
+          bc.boundary_ids =
+            parse_ids<types::boundary_id>(prm.get("Boundary ids"),
+                                          path + "/Boundary ids",
+                                          numbers::internal_face_boundary_id -
+                                            1);
+          require_boundary_ids(bc.boundary_ids, path + "/Boundary ids");
+          const std::string type = prm.get("Type");
+          bc.type = type == "fixed"        ? model::BoundaryCondition::Type::fixed :
+                    type == "displacement" ? model::BoundaryCondition::Type::displacement :
+                    type == "velocity"     ? model::BoundaryCondition::Type::velocity :
+                                             model::BoundaryCondition::Type::symmetry;
+          bc.components =
+            parse_components(prm.get("Components"), path + "/Components");
+          bc.moment_point =
+            Point<3>(parse_vector(prm.get("Moment point"), path + "/Moment point"));
+          const std::string expression = prm.get("Function expression");
+          if (bc.type == model::BoundaryCondition::Type::displacement ||
+              bc.type == model::BoundaryCondition::Type::velocity)
+            {
+              const std::shared_ptr<FunctionParser<3>> function =
+                make_function(expression, prm.get("Function constants"),
+                              bc.components.size(), path);
+              bc.depends_on_position = uses_position(expression);
+              for (unsigned int k = 0; k < bc.components.size(); ++k)
+                bc.functions.push_back(
+                  [function, k](const Point<3> &X, const double t) {
+                    function->set_time(t);
+                    return function->value(X, k);
+                  });
+            }
+          else if (Utilities::trim(expression) != "0")
+            throw InputError(path + "/Function expression",
+                             "is not used by Type = " + type +
+                               "; leave it at 0");
+          prm.leave_subsection();
+          m.boundary_conditions.push_back(std::move(bc));
+        }
+      prm.leave_subsection();
+
+      // Rigid surfaces, each on its own body.
+      prm.enter_subsection("Rigid surfaces");
+      for (const std::string &name : listed_names(prm))
+        {
+          const std::string path = "Rigid surfaces/" + name;
+          prm.enter_subsection(name);
+          model::RigidSurfaceDefinition definition;
+          definition.name = name;
+          const std::string shape = prm.get("Shape");
+          definition.surface.shape =
+            shape == "plane" ?
+              contact::RigidSurface::Shape::plane :
+              shape == "cylinder with the solid outside" ?
+              contact::RigidSurface::Shape::cylinder_solid_outside :
+              contact::RigidSurface::Shape::cylinder_solid_inside;
+          definition.surface.point =
+            Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
+          const Tensor<1, 3> direction =
+            parse_vector(prm.get("Direction"), path + "/Direction");
+          if (!(direction.norm() > 0.))
+            throw InputError(path + "/Direction", "must not be zero");
+          definition.surface.normal = direction / direction.norm();
+          definition.surface.radius = prm.get_double("Radius");
+          if (definition.surface.shape != contact::RigidSurface::Shape::plane)
+            require_positive(definition.surface.radius, path + "/Radius");
+          definition.surface.friction_coefficient =
+            prm.get_double("Friction coefficient");
+          definition.boundary_ids =
+            parse_ids<types::boundary_id>(prm.get("Boundary ids"),
+                                          path + "/Boundary ids",
+                                          numbers::internal_face_boundary_id -
+                                            1);
+          require_boundary_ids(definition.boundary_ids, path + "/Boundary ids");
+          const std::string penalty = Utilities::trim(prm.get("Penalty scale factor"));
+          if (penalty == "inherit")
+            definition.penalty_scale = contact.penalty_scale;
+          else
+            {
+              try
+                {
+                  definition.penalty_scale = Utilities::string_to_double(penalty);
+                }
+              catch (...)
+                {
+                  throw InputError(path + "/Penalty scale factor",
+                                   "'" + penalty.substr(0, 40) +
+                                     "' is neither a number nor 'inherit'");
+                }
+              require_positive(definition.penalty_scale,
+                               path + "/Penalty scale factor");
+            }
+
+          model::RigidBody &body  = definition.body;
+          body.name               = name;
+          body.mass               = prm.get_double("Mass");
+          body.reference_position = definition.surface.point;
+          const std::string free  = Utilities::trim(prm.get("Free directions"));
+          if (!free.empty())
+            {
+              if (!(body.mass > 0.))
+                throw InputError(path + "/Free directions",
+                                 "a body without mass (Mass = 0) cannot move "
+                                 "freely; give it a Mass");
+              for (const unsigned int d :
+                   parse_components(free, path + "/Free directions"))
+                body.free[d] = true;
+            }
+          body.velocity = parse_vector(prm.get("Initial velocity"),
+                                       path + "/Initial velocity");
+          const std::shared_ptr<FunctionParser<3>> velocity =
+            make_function(prm.get("Velocity function"),
+                          prm.get("Function constants"), 3, path);
+          if (uses_position(prm.get("Velocity function")))
+            throw InputError(path + "/Velocity function",
+                             "may depend on t only");
+          body.prescribed_velocity = [velocity](const double t) {
+            velocity->set_time(t);
+            Tensor<1, 3> v;
+            for (unsigned int d = 0; d < 3; ++d)
+              v[d] = velocity->value(Point<3>(), d);
+            return v;
+          };
+          prm.leave_subsection();
+          m.rigid_surfaces.push_back(std::move(definition));
+        }
+      prm.leave_subsection();
+
+      m.setup();
+      simulation = std::make_unique<model::ExplicitSimulation>(
+        m, time_integration, output, "Model", model_parameters);
+      simulation->add_standard_postprocessors();
+    }
+
+
+
+    ModelStudy::~ModelStudy() = default;
+
+
+
+    void
+    ModelStudy::run(std::ostream &log)
+    {
+      simulation->run(log);
+    }
+
+
+
+    void
+    ModelStudy::check(std::ostream &log)
+    {
+      simulation->check(log);
+    }
+
+
+
+    namespace
+    {
+      const int model_study_registered = registry::register_study(
+        "Model",
+        "any multi-part solid model from a Gmsh mesh: parts, boundary "
+        "conditions and rigid surfaces named in the parameter file "
+        "(explicit dynamics; see doc/model.md)",
+        &ModelStudy::declare_parameters,
+        [](ParameterHandler &prm, const std::string &parameter_file)
+          -> std::unique_ptr<Study> {
+          return std::make_unique<ModelStudy>(prm, parameter_file);
+        });
+    } // namespace
+  } // namespace studies
+} // namespace rubberdyn
