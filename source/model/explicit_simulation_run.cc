@@ -297,11 +297,11 @@ namespace rubberdyn
       const std::string  path =
         checkpoint_directory + "/rank_" +
         std::to_string(Utilities::MPI::this_mpi_process(comm)) + ".bin";
-      std::string error;
-      double      header[5] = {-1., 0., 0., 0., 0.};
+      std::string   error;
+      double        header[5] = {-1., 0., 0., 0., 0.};
+      std::ifstream in(path, std::ios::binary);
       try
         {
-          std::ifstream in(path, std::ios::binary);
           if (!in)
             throw std::runtime_error("cannot read");
           char magic[sizeof(rank_file_magic)] = {};
@@ -309,16 +309,47 @@ namespace rubberdyn
           if (!in || std::string(magic) != rank_file_magic)
             throw std::runtime_error("not a rubberdyn checkpoint");
           binary_io::read_doubles(in, header, 5, "step and time");
-          explicit_solver->load(in);
-          for (const auto &plugin : postprocessors)
-            plugin->load(in);
-          if (in.peek() != std::char_traits<char>::eof())
-            throw std::runtime_error("it holds more data than this model has");
         }
       catch (const std::exception &e)
         {
           error = path + ": " + e.what();
+          in.setstate(std::ios::failbit);
         }
+      // Collective on every rank, also where the header failed (the
+      // failed stream makes it fail there): it tells every rank which
+      // rank's piece is bad.
+      try
+        {
+          explicit_solver->load(in);
+        }
+      catch (const time_integration::SolverFailure &failure)
+        {
+          if (error.empty())
+            {
+              // "rank R: what" from the solver: name R's file.
+              const std::string text = failure.what();
+              unsigned int      rank = 0;
+              if (std::sscanf(text.c_str(), "rank %u:", &rank) == 1)
+                error = checkpoint_directory + "/rank_" +
+                        std::to_string(rank) + ".bin: " +
+                        text.substr(text.find(':') + 2);
+              else
+                error = path + ": " + text;
+            }
+        }
+      if (error.empty())
+        try
+          {
+            for (const auto &plugin : postprocessors)
+              plugin->load(in);
+            if (in.peek() != std::char_traits<char>::eof())
+              throw std::runtime_error(
+                "it holds more data than this model has");
+          }
+        catch (const std::exception &e)
+          {
+            error = path + ": " + e.what();
+          }
       throw_if_any(comm, entry, error);
       // All pieces must belong to one step, the one study.txt names.
       const double lowest  = Utilities::MPI::min(header[0], comm);

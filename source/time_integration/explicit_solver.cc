@@ -270,6 +270,10 @@ namespace rubberdyn
     ExplicitSolver::load(std::istream &in)
     {
       using binary_io::read_doubles;
+      // Every rank reads its own piece; only if all succeeded do they
+      // exchange ghost values: a rank that fails must not leave the others
+      // waiting in a collective.
+      std::string error;
       try
         {
           char magic[sizeof(checkpoint_magic)] = {};
@@ -311,8 +315,6 @@ namespace rubberdyn
           const unsigned int n_owned = partitioner->locally_owned_size();
           read_doubles(in, u.begin(), n_owned, "displacements");
           read_doubles(in, v.begin(), n_owned, "velocities");
-          u.update_ghost_values();
-          v.update_ghost_values();
           for (RigidBody &body : bodies)
             {
               double values[9];
@@ -343,10 +345,18 @@ namespace rubberdyn
           for (model::ForceContribution *contribution : contributions)
             contribution->load(in);
         }
-      catch (const CheckpointError &error)
+      catch (const std::exception &failure)
         {
-          throw SolverFailure(error.what());
+          error = failure.what();
         }
+      const std::vector<std::string> errors =
+        Utilities::MPI::all_gather(comm, error);
+      for (unsigned int rank = 0; rank < errors.size(); ++rank)
+        if (!errors[rank].empty())
+          throw SolverFailure("rank " + std::to_string(rank) + ": " +
+                              errors[rank]);
+      u.update_ghost_values();
+      v.update_ghost_values();
     }
 
 
