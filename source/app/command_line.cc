@@ -24,6 +24,10 @@ namespace rubberdyn
       const char *usage_text =
         "Usage:\n"
         "  rubberdyn FILE.prm            run the study described by FILE.prm\n"
+        "  rubberdyn --check FILE.prm    read and validate FILE.prm and build its\n"
+        "                                study without running it or writing\n"
+        "                                anything; prints one line and exits 0\n"
+        "                                if it would run, or the error\n"
         "  rubberdyn --default           run the default study: every parameter\n"
         "                                at its default (doc/parameters.prm)\n"
         "  rubberdyn --print-parameters  print every parameter with its\n"
@@ -76,10 +80,11 @@ namespace rubberdyn
 
       /**
        * Run the study of @p filename, or with every parameter at its
-       * default if @p filename is empty.
+       * default if @p filename is empty; with @p check_only, only construct
+       * and check() it.
        */
       int
-      run_study(const std::string &filename)
+      run_study(const std::string &filename, const bool check_only = false)
       {
         dealii::ParameterHandler prm;
         std::unique_ptr<studies::Study> study;
@@ -93,6 +98,20 @@ namespace rubberdyn
             if (!filename.empty())
               io::read_parameter_file(prm, filename);
             study = studies::registry::create(prm, filename);
+            if (check_only)
+              {
+                study->check(std::cout);
+                if (is_root())
+                  std::cout << "rubberdyn: '" << filename << "' is a valid '"
+                            << prm.get("Study")
+                            << "' study (checked; nothing was run or "
+                               "written)"
+                            << std::endl;
+                return 0;
+              }
+            // A study may find bad input only while it runs (before it
+            // writes anything); that error names the file too.
+            study->run(std::cout);
           }
         catch (const InputError &error)
           {
@@ -105,7 +124,6 @@ namespace rubberdyn
                            error.entry_path + "': " + error.message);
             return 2;
           }
-        study->run(std::cout);
         return 0;
       }
 
@@ -243,6 +261,8 @@ namespace rubberdyn
             }
           if (arguments[0] == "--default" && arguments.size() == 1)
             return run_study("");
+          if (arguments[0] == "--check" && arguments.size() == 2)
+            return run_study(arguments[1], true);
           if (arguments[0] == "--print-parameters")
             return print_parameters();
           if (arguments[0] == "--fit-yeoh")

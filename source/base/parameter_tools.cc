@@ -1,6 +1,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -44,6 +45,48 @@ namespace rubberdyn
       if (!(value > 0.))
         throw InputError(path,
                          "must be positive, but is " + format_number(value));
+      if (!is_usable_number(value))
+        throw InputError(path,
+                         "must be a finite positive number, but is " +
+                           format_number(value));
+    }
+
+
+
+    bool
+    is_usable_number(const double value)
+    {
+      return std::isfinite(value) && (value == 0. || std::isnormal(value));
+    }
+
+
+
+    void
+    require_usable(const double       value,
+                   const std::string &path,
+                   const std::string &what,
+                   const std::string &unit,
+                   const Sign         sign,
+                   const std::string &also_from)
+    {
+      const bool sign_ok = (sign == Sign::positive     ? value > 0. :
+                            sign == Sign::non_negative ? value >= 0. :
+                                                         true);
+      if (is_usable_number(value) && sign_ok)
+        return;
+      const char *required =
+        (sign == Sign::positive     ? "finite positive" :
+         sign == Sign::non_negative ? "finite non-negative" :
+                                      "finite");
+      throw InputError(path,
+                       (also_from.empty() ? "" : "with " + also_from + ", ") +
+                         "gives " + what + " = " + format_number(value) +
+                         (unit.empty() ? "" : " " + unit) +
+                         ", which is not a " + required + " number" +
+                         (std::isfinite(value) && value != 0. &&
+                              !std::isnormal(value) ?
+                            " (a denormal, below 2.2e-308 in magnitude)" :
+                            ""));
     }
   } // namespace parameter_tools
 } // namespace rubberdyn

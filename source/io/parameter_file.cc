@@ -5,13 +5,23 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/io/parameter_file.h>
 
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
-#include <regex>
+#include <map>
 #include <sstream>
 #include <vector>
+
+// No std::regex here: libstdc++'s matcher recurses once per character, so
+// a pattern like "(.*)" on a long value overflows the stack (a parameter
+// file with a 100 000-character value crashed the program with SIGSEGV in
+// std::__detail::_Executor). The messages are taken apart with find().
 
 namespace rubberdyn
 {
@@ -19,6 +29,60 @@ namespace rubberdyn
   {
     namespace
     {
+      bool
+      is_space(const char c)
+      {
+        return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+               c == '\f';
+      }
+
+      /** @p text with each run of whitespace folded to one space, trimmed. */
+      std::string
+      fold_whitespace(const std::string &text)
+      {
+        std::string result;
+        bool        pending_space = false;
+        for (const char c : text)
+          if (is_space(c))
+            pending_space = !result.empty();
+          else
+            {
+              if (pending_space)
+                result += ' ';
+              pending_space = false;
+              result += c;
+            }
+        return result;
+      }
+
+      bool
+      starts_with(const std::string &text, const std::string &prefix)
+      {
+        return text.compare(0, prefix.size(), prefix) == 0;
+      }
+
+      bool
+      ends_with(const std::string &text, const std::string &suffix)
+      {
+        return text.size() >= suffix.size() &&
+               text.compare(text.size() - suffix.size(),
+                            suffix.size(),
+                            suffix) == 0;
+      }
+
+      /**
+       * A value or name from the input as it is quoted in a message: at
+       * most 60 characters, so that a message stays one readable line.
+       */
+      std::string
+      abridged(const std::string &text, const std::size_t max_shown = 60)
+      {
+        if (text.size() <= max_shown)
+          return text;
+        return text.substr(0, max_shown) + "... (" +
+               std::to_string(text.size()) + " characters)";
+      }
+
       /**
        * The "additional information" of a deal.II exception, without the
        * banner (file, line, function, condition), whitespace folded so it
@@ -29,40 +93,190 @@ namespace rubberdyn
       {
         std::ostringstream info;
         exception.print_info(info);
-        std::string text =
-          std::regex_replace(info.str(), std::regex("\\s+"), " ");
-        text = std::regex_replace(text, std::regex("^ +| +$"), "");
-        return text;
+        return fold_whitespace(info.str());
       }
 
       /**
-       * The subsection path ("A/B/") in force at line @p line_number of
-       * @p filename, found by replaying its 'subsection' and 'end' lines:
+       * What a line of a parameter file is, as ParameterHandler reads it:
+       * comment removed, whitespace folded.
+       */
+      struct ParsedLine
+      {
+        enum class Kind
+        {
+          blank,
+          set,
+          subsection,
+          end,
+          other
+        };
+        Kind        kind = Kind::blank;
+        std::string name; // entry or subsection name
+        std::string text; // the folded line
+      };
+
+      ParsedLine
+      parse_line(const std::string &raw)
+      {
+        ParsedLine line;
+        line.text = fold_whitespace(raw.substr(0, raw.find('#')));
+        if (line.text.empty())
+          line.kind = ParsedLine::Kind::blank;
+        else if (line.text == "end" || line.text == "END")
+          line.kind = ParsedLine::Kind::end;
+        else if (starts_with(line.text, "subsection ") ||
+                 starts_with(line.text, "SUBSECTION "))
+          {
+            line.kind = ParsedLine::Kind::subsection;
+            line.name = line.text.substr(11);
+          }
+        else if (starts_with(line.text, "set ") ||
+                 starts_with(line.text, "SET "))
+          {
+            line.kind = ParsedLine::Kind::set;
+            line.name =
+              fold_whitespace(line.text.substr(4, line.text.find('=') - 4));
+          }
+        else
+          line.kind = ParsedLine::Kind::other;
+        return line;
+      }
+
+      /**
+       * The lines of a parameter file with, for each, the subsection path
+       * ("A/B/") in force there, found by replaying 'subsection' and 'end':
        * ParameterHandler's own path is private, and its messages name an
        * offending entry without the subsections it lives in.
        */
-      std::string
-      subsection_path_at(const std::string &filename,
-                         const unsigned int line_number)
+      class FileLines
       {
-        std::ifstream            file(filename);
-        std::vector<std::string> path;
-        std::string              line;
-        for (unsigned int n = 1; n < line_number && std::getline(file, line);
-             ++n)
+      public:
+        explicit FileLines(const std::string &text)
+        {
+          std::istringstream       in(text);
+          std::string              raw;
+          std::vector<std::string> path;
+          while (std::getline(in, raw))
+            {
+              const ParsedLine line = parse_line(raw);
+              paths.push_back(joined(path));
+              lines.push_back(line);
+              if (line.kind == ParsedLine::Kind::subsection)
+                path.push_back(line.name);
+              else if (line.kind == ParsedLine::Kind::end && !path.empty())
+                path.pop_back();
+            }
+          open_path = joined(path);
+        }
+
+        /** The line numbered @p n (from 1), blank if out of range. */
+        ParsedLine
+        line(const unsigned int n) const
+        {
+          return (n >= 1 && n <= lines.size()) ? lines[n - 1] : ParsedLine();
+        }
+
+        /** The subsection path ("A/B/") in force at line @p n. */
+        std::string
+        path_at(const unsigned int n) const
+        {
+          return (n >= 1 && n <= paths.size()) ? paths[n - 1] : "";
+        }
+
+        /**
+         * The last line that sets the entry @p full_name ("A/B/Name"), 0 if
+         * none does (the last one counts, as in ParameterHandler).
+         */
+        unsigned int
+        line_setting(const std::string &full_name) const
+        {
+          unsigned int result = 0;
+          for (unsigned int i = 0; i < lines.size(); ++i)
+            if (lines[i].kind == ParsedLine::Kind::set &&
+                paths[i] + lines[i].name == full_name)
+              result = i + 1;
+          return result;
+        }
+
+        /** The subsections still open at the end of the file ("A/B/"). */
+        std::string open_path;
+
+      private:
+        static std::string
+        joined(const std::vector<std::string> &path)
+        {
+          std::string result;
+          for (const std::string &name : path)
+            result += name + '/';
+          return result;
+        }
+
+        std::vector<ParsedLine>  lines;
+        std::vector<std::string> paths;
+      };
+
+      /**
+       * The longest logical line (lines continued with a trailing
+       * backslash count as one, as ParameterHandler joins them) that a
+       * parameter file may hold. The longest real value, a hardening table
+       * of a few hundred points, is far shorter.
+       */
+      constexpr std::size_t max_line_length = 10000;
+
+      /** The largest parameter file read (bytes). */
+      constexpr std::size_t max_file_size = 1 << 20;
+
+      /**
+       * Refuse a line longer than max_line_length before ParameterHandler
+       * and the message formatting see it, naming the entry it sets.
+       */
+      void
+      check_line_lengths(const std::string &filename,
+                         const std::string &text,
+                         const FileLines   &file)
+      {
+        std::istringstream in(text);
+        std::string        raw;
+        std::size_t        logical_length = 0;
+        unsigned int       first_line     = 1;
+        for (unsigned int n = 1; std::getline(in, raw); ++n)
           {
-            line = line.substr(0, line.find('#'));
-            line = std::regex_replace(line, std::regex("\\s+"), " ");
-            line = std::regex_replace(line, std::regex("^ +| +$"), "");
-            if (line.rfind("subsection ", 0) == 0)
-              path.push_back(line.substr(11));
-            else if (line == "end" && !path.empty())
-              path.pop_back();
+            if (logical_length == 0)
+              first_line = n;
+            logical_length += raw.size();
+            if (logical_length > max_line_length)
+              {
+                const ParsedLine  line = file.line(first_line);
+                const std::string where =
+                  "line " + std::to_string(first_line) + ", ";
+                std::string what;
+                if (line.kind == ParsedLine::Kind::set)
+                  what = "entry '" + file.path_at(first_line) +
+                         abridged(line.name) + "'";
+                else if (line.kind == ParsedLine::Kind::subsection)
+                  what = "subsection '" + file.path_at(first_line) +
+                         abridged(line.name) + "'";
+                else
+                  what = "in subsection '" + file.path_at(first_line) + "'";
+                throw InputError(filename,
+                                 where + what + ": the line is longer than " +
+                                   std::to_string(max_line_length) +
+                                   " characters; no parameter needs that "
+                                   "much");
+              }
+            if (!raw.empty() && raw.back() == '\\')
+              continue;
+            logical_length = 0;
           }
-        std::string result;
-        for (const std::string &name : path)
-          result += name + '/';
-        return result;
+      }
+
+      /** The part of @p text between @p begin and @p end. */
+      std::string
+      between(const std::string &text,
+              const std::size_t  begin,
+              const std::size_t  end)
+      {
+        return text.substr(begin, end - begin);
       }
 
       /**
@@ -72,46 +286,117 @@ namespace rubberdyn
        * entry named Impactor mass does not match ...").
        */
       std::string
-      parse_error_message(const std::string &filename, const std::string &text)
+      parse_error_message(const std::string &filename,
+                          const FileLines   &file,
+                          const std::string &text)
       {
-        // The file name may hold regex metacharacters: match it literally.
-        // (deal.II 9.4 omits the '>' after it in some messages.)
-        std::smatch line_match;
-        if (!std::regex_search(text,
-                               line_match,
-                               std::regex("^Line <([0-9]+)> of file <")))
+        if (starts_with(text,
+                        "There are unequal numbers of 'subsection' "
+                        "and 'end' statements"))
+          {
+            std::string open = file.open_path;
+            if (!open.empty())
+              return "subsection '" + open.substr(0, open.size() - 1) +
+                     "' is not closed: an 'end' is missing before the end "
+                     "of the file";
+            return "the numbers of 'subsection' and 'end' lines differ";
+          }
+
+        // "Line <N> of file <F>: ..." (deal.II 9.4 omits the '>' after
+        // the file name in some messages).
+        const std::string line_prefix = "Line <";
+        if (!starts_with(text, line_prefix))
           return text;
-        std::string rest = line_match.suffix();
-        if (rest.rfind(filename, 0) != 0)
+        const std::size_t digits_end  = text.find('>', line_prefix.size());
+        const std::string file_prefix = "> of file <" + filename;
+        if (digits_end == std::string::npos ||
+            text.compare(digits_end, file_prefix.size(), file_prefix) != 0)
           return text;
-        rest.erase(0, filename.size());
-        rest = std::regex_replace(rest, std::regex("^>?: "), "");
-        const unsigned int line  = std::stoul(line_match[1]);
-        const std::string  path  = subsection_path_at(filename, line);
-        const std::string  where = "line " + std::to_string(line) + ", ";
-        std::smatch        m;
-        if (std::regex_search(rest,
-                              m,
-                              std::regex("^The entry value (.*) for the entry "
-                                         "named (.*) does not match the given "
-                                         "pattern: (.*)$")))
-          return where + "entry '" + path + m[2].str() + "': the value '" +
-                 m[1].str() + "' is not allowed; allowed: " + m[3].str();
-        if (std::regex_search(rest,
-                              m,
-                              std::regex("^No entry with name <(.*)> was "
-                                         "declared in the current subsection")))
-          return where + "entry '" + path + m[1].str() +
+        const std::string number =
+          between(text, line_prefix.size(), digits_end);
+        if (number.empty() ||
+            number.find_first_not_of("0123456789") != std::string::npos ||
+            number.size() > 9)
+          return text;
+        const unsigned int line = std::stoul(number);
+        std::string        rest = text.substr(digits_end + file_prefix.size());
+        if (starts_with(rest, ">"))
+          rest.erase(0, 1);
+        if (starts_with(rest, ": "))
+          rest.erase(0, 2);
+
+        const std::string path  = file.path_at(line);
+        const std::string where = "line " + std::to_string(line) + ", ";
+
+        // The value may hold anything, so the fixed phrases around it are
+        // found from the right. An empty value leaves one space between
+        // "value" and "for" once whitespace is folded.
+        const std::string value_prefix   = "The entry value ";
+        const std::string name_separator = " for the entry named ";
+        const std::string pattern_separator =
+          " does not match the given pattern: ";
+        if (starts_with(rest, value_prefix))
+          {
+            const std::size_t p2 = rest.rfind(pattern_separator);
+            const std::size_t p1 =
+              (p2 == std::string::npos ? p2 : rest.rfind(name_separator, p2));
+            if (p1 != std::string::npos && p1 + 1 >= value_prefix.size())
+              return where + "entry '" + path +
+                     between(rest, p1 + name_separator.size(), p2) +
+                     "': the value '" +
+                     (p1 < value_prefix.size() ?
+                        std::string() :
+                        abridged(between(rest, value_prefix.size(), p1))) +
+                     "' is not allowed; allowed: " +
+                     rest.substr(p2 + pattern_separator.size());
+          }
+
+        const std::string undeclared_prefix = "No entry with name <";
+        const std::string undeclared_suffix =
+          "> was declared in the current subsection";
+        const std::size_t undeclared_end = rest.find(undeclared_suffix);
+        if (starts_with(rest, undeclared_prefix) &&
+            undeclared_end != std::string::npos)
+          return where + "entry '" + path +
+                 abridged(
+                   between(rest, undeclared_prefix.size(), undeclared_end)) +
                  "': no such entry is declared (misspelt, or in the wrong "
                  "subsection?)";
-        if (std::regex_search(rest,
-                              m,
-                              std::regex("no such subsection to be entered: "
-                                         "(.*)$")))
-          return where + "subsection '" + path +
-                 std::regex_replace(m[1].str(), std::regex("\\.$"), "") +
-                 "': no such subsection is declared";
-        return where + rest;
+
+        const std::string no_subsection = "no such subsection to be entered: ";
+        const std::size_t no_subsection_at = rest.find(no_subsection);
+        if (no_subsection_at != std::string::npos)
+          {
+            std::string name =
+              rest.substr(no_subsection_at + no_subsection.size());
+            if (ends_with(name, "."))
+              name.pop_back();
+            return where + "subsection '" + path + abridged(name) +
+                   "': no such subsection is declared";
+          }
+
+        // Any other complaint about a line (no '=' after 'set', an 'end'
+        // too many, a line that is no statement): name what the line
+        // tries to be, or else the subsection it is in.
+        const ParsedLine parsed = file.line(line);
+        if (rest.find("no subsection to leave") != std::string::npos)
+          rest = "this 'end' closes no subsection";
+        else if (rest.find("Invalid format of 'set'") != std::string::npos)
+          rest = "a 'set' line needs the form 'set NAME = VALUE'";
+        else if (rest.find("could not be parsed") != std::string::npos)
+          rest = "cannot read '" + abridged(parsed.text) +
+                 "': expected 'set NAME = VALUE', 'subsection NAME' or 'end'";
+        if (parsed.kind == ParsedLine::Kind::set)
+          return where + "entry '" + path + abridged(parsed.name) +
+                 "': " + abridged(rest, 200);
+        if (parsed.kind == ParsedLine::Kind::subsection)
+          return where + "subsection '" + path + abridged(parsed.name) +
+                 "': " + abridged(rest, 200);
+        return where +
+               (path.empty() ?
+                  std::string("at the top level") :
+                  "in subsection '" + path.substr(0, path.size() - 1) + "'") +
+               ": " + abridged(rest, 200);
       }
 
       /** Undo ParameterHandler's mangling of names ("_20" for ' ', ...). */
@@ -119,8 +404,13 @@ namespace rubberdyn
       demangle(const std::string &s)
       {
         std::string result;
+        // Only '_' followed by two hex digits is a mangled character: a
+        // subsection named by the user (e.g. "bottom_plate") reaches here
+        // as it was written.
         for (unsigned int i = 0; i < s.size(); ++i)
-          if (s[i] == '_' && i + 2 < s.size())
+          if (s[i] == '_' && i + 2 < s.size() &&
+              std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+              std::isxdigit(static_cast<unsigned char>(s[i + 2])))
             {
               result += static_cast<char>(std::stoi(s.substr(i + 1, 2),
                                                     nullptr,
@@ -132,10 +422,81 @@ namespace rubberdyn
         return result;
       }
 
+      /** The declared parameters of @p prm as a property tree. */
+      boost::property_tree::ptree
+      parameter_tree(const dealii::ParameterHandler &prm)
+      {
+        std::stringstream json;
+        prm.print_parameters(json,
+                             dealii::ParameterHandler::OutputStyle(
+                               dealii::ParameterHandler::JSON |
+                               dealii::ParameterHandler::KeepDeclarationOrder));
+        boost::property_tree::ptree tree;
+        boost::property_tree::read_json(json, tree);
+        return tree;
+      }
+
+      /**
+       * Refuse a value of a floating-point entry that the pattern lets
+       * through but no computation can use: NaN and infinity (which
+       * deal.II's Patterns::Double accepts when written as "nan" or
+       * "inf"), and numbers that do not fit a double as a normal number
+       * (1e-320 is a denormal, 1e-400 underflows to 0). @p path is the
+       * subsection path of @p tree ("A/B/").
+       */
+      void
+      check_floating_point_values(const std::string                 &filename,
+                                  const FileLines                   &file,
+                                  const boost::property_tree::ptree &tree,
+                                  const std::string                 &path)
+      {
+        for (const auto &child : tree)
+          {
+            const auto value = child.second.get_optional<std::string>("value");
+            if (!value)
+              {
+                check_floating_point_values(filename,
+                                            file,
+                                            child.second,
+                                            path + demangle(child.first) + '/');
+                continue;
+              }
+            if (!starts_with(
+                  child.second.get<std::string>("pattern_description", ""),
+                  "[Double"))
+              continue;
+            errno                    = 0;
+            char        *end         = nullptr;
+            const double x           = std::strtod(value->c_str(), &end);
+            const bool   range_error = (errno == ERANGE);
+            if (parameter_tools::is_usable_number(x) && !range_error)
+              continue;
+            const std::string  name = path + demangle(child.first);
+            const unsigned int line = file.line_setting(name);
+            throw InputError(
+              filename,
+              (line > 0 ? "line " + std::to_string(line) + ", " :
+                          std::string()) +
+                "entry '" + name + "': the value '" + abridged(*value) +
+                "' is not allowed: " +
+                (std::isnan(x) ?
+                   "not a number" :
+                 std::isinf(x) ?
+                   "infinite" :
+                 x == 0. ?
+                   "too small for a double (it underflows to 0)" :
+                 std::abs(x) > 1. ?
+                   "too large for a double" :
+                   "too small for a double: a denormal number (below "
+                   "2.2e-308 in magnitude), which loses precision; write 0 "
+                   "or a larger value"));
+          }
+      }
+
       void
       print_comment(const std::string &text,
                     const std::string &indent,
-                    std::ostream &     out)
+                    std::ostream      &out)
       {
         // Each line of the text on its own, wrapped at about 78 columns.
         std::istringstream lines(text);
@@ -162,7 +523,7 @@ namespace rubberdyn
       void
       print_tree(const boost::property_tree::ptree &tree,
                  const unsigned int                 depth,
-                 std::ostream &                     out)
+                 std::ostream                      &out)
       {
         const std::string indent(2 * depth, ' ');
         // Entries first, then subsections, each in declaration order.
@@ -196,21 +557,42 @@ namespace rubberdyn
 
     void
     read_parameter_file(dealii::ParameterHandler &prm,
-                        const std::string &       filename)
+                        const std::string        &filename)
     {
-      std::ifstream file(filename);
-      if (!file)
+      std::ifstream in(filename, std::ios::binary);
+      if (!in)
         throw InputError(filename, "cannot open the parameter file");
+      // An ifstream opens a directory and reads nothing from it, which
+      // would run the default study.
+      if (std::filesystem::is_directory(filename))
+        throw InputError(filename, "is a directory, not a parameter file");
+      std::string text;
+      {
+        std::ostringstream buffer;
+        buffer << in.rdbuf();
+        text = buffer.str();
+      }
+      if (text.size() > max_file_size)
+        throw InputError(filename,
+                         "the file is larger than " +
+                           std::to_string(max_file_size) +
+                           " bytes; is it a parameter file?");
+      const FileLines file(text);
+      check_line_lengths(filename, text, file);
+
+      std::istringstream stream(text);
       try
         {
-          prm.parse_input(file, filename, "", false);
+          prm.parse_input(stream, filename, "", false);
         }
       catch (const dealii::ExceptionBase &exception)
         {
           throw InputError(filename,
                            parse_error_message(filename,
+                                               file,
                                                message_of(exception)));
         }
+      check_floating_point_values(filename, file, parameter_tree(prm), "");
     }
 
 
@@ -299,21 +681,14 @@ namespace rubberdyn
 
     void
     print_documented_parameters(const dealii::ParameterHandler &prm,
-                                std::ostream &                  out)
+                                std::ostream                   &out)
     {
-      std::stringstream json;
-      prm.print_parameters(json,
-                           dealii::ParameterHandler::OutputStyle(
-                             dealii::ParameterHandler::JSON |
-                             dealii::ParameterHandler::KeepDeclarationOrder));
-      boost::property_tree::ptree tree;
-      boost::property_tree::read_json(json, tree);
       out << "# rubberdyn parameter file: every parameter with its "
              "documentation,\n"
              "# allowed values and default. Units: mm, ms, kg, kN, GPa "
              "(energy in J = kN mm).\n"
              "# Written by 'rubberdyn --print-parameters'.\n";
-      print_tree(tree, 0, out);
+      print_tree(parameter_tree(prm), 0, out);
     }
   } // namespace io
 } // namespace rubberdyn

@@ -79,8 +79,16 @@ namespace rubberdyn
     double
     Elastic<dim>::reference_wave_speed() const
     {
-      return std::sqrt((moduli.bulk_modulus + 4. / 3. * moduli.shear_modulus) /
-                       moduli.density);
+      return finite_strain_j2::reference_wave_speed(moduli);
+    }
+
+
+
+    template <int dim>
+    std::vector<DerivedConstant>
+    Elastic<dim>::derived_constants() const
+    {
+      return finite_strain_j2::derived_constants(moduli);
     }
 
 

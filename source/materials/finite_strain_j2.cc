@@ -57,6 +57,44 @@ namespace rubberdyn
 
 
 
+      double
+      reference_wave_speed(const ElasticModuli &moduli)
+      {
+        return std::sqrt(
+          (moduli.bulk_modulus + 4. / 3. * moduli.shear_modulus) /
+          moduli.density);
+      }
+
+
+
+      std::vector<DerivedConstant>
+      derived_constants(const ElasticModuli &moduli)
+      {
+        using parameter_tools::Sign;
+        return {{"the density",
+                 moduli.density,
+                 "kg/mm^3",
+                 {"Density"},
+                 Sign::positive},
+                {"the shear modulus G = E/(2(1 + nu))",
+                 moduli.shear_modulus,
+                 "GPa",
+                 {"Young's modulus", "Poisson's ratio"},
+                 Sign::positive},
+                {"the bulk modulus K = E/(3(1 - 2 nu))",
+                 moduli.bulk_modulus,
+                 "GPa",
+                 {"Young's modulus", "Poisson's ratio"},
+                 Sign::positive},
+                {"the dilatational wave speed sqrt((K + 4G/3)/density)",
+                 reference_wave_speed(moduli),
+                 "mm/ms",
+                 {"Young's modulus", "Poisson's ratio", "Density"},
+                 Sign::positive}};
+      }
+
+
+
       void
       initialize_state(const ArrayView<double> &state)
       {

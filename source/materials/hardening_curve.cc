@@ -4,6 +4,7 @@
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/materials/hardening_curve.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace rubberdyn
@@ -41,8 +42,24 @@ namespace rubberdyn
                 std::to_string(i + 1) + " has stress " +
                 format_number(stresses[i]) + " GPa after " +
                 format_number(k_points.back()) + " GPa");
+          for (const double value : {plastic_strains[i], stresses[i]})
+            if (!parameter_tools::is_usable_number(value))
+              throw InputError(path + "/Hardening curve",
+                               "point " + std::to_string(i + 1) + " holds " +
+                                 format_number(value) +
+                                 ", which is not a finite normal number");
           alpha_points.push_back(plastic_strains[i]);
           k_points.push_back(stresses[i]);
+          // Close points give a steep slope: it must stay finite.
+          parameter_tools::require_usable((k_points.back() - k_points[i]) /
+                                            (alpha_points.back() -
+                                             alpha_points[i]),
+                                          path + "/Hardening curve",
+                                          "the slope between points " +
+                                            std::to_string(i) + " and " +
+                                            std::to_string(i + 1),
+                                          "GPa",
+                                          parameter_tools::Sign::non_negative);
         }
     }
 
@@ -131,6 +148,19 @@ namespace rubberdyn
           if (last || alpha_old + delta_alpha <= alpha_points[i + 1])
             return std::max(delta_alpha, 0.);
         }
+    }
+
+
+
+    double
+    HardeningCurve::largest_slope() const
+    {
+      double H = 0.;
+      for (unsigned int i = 0; i + 1 < alpha_points.size(); ++i)
+        H = std::max(H,
+                     (k_points[i + 1] - k_points[i]) /
+                       (alpha_points[i + 1] - alpha_points[i]));
+      return H;
     }
 
 

@@ -119,8 +119,35 @@ namespace rubberdyn
     double
     J2Plasticity<dim>::reference_wave_speed() const
     {
-      return std::sqrt((moduli.bulk_modulus + 4. / 3. * moduli.shear_modulus) /
-                       moduli.density);
+      return finite_strain_j2::reference_wave_speed(moduli);
+    }
+
+
+
+    template <int dim>
+    std::vector<DerivedConstant>
+    J2Plasticity<dim>::derived_constants() const
+    {
+      using parameter_tools::Sign;
+      std::vector<DerivedConstant> constants =
+        finite_strain_j2::derived_constants(moduli);
+      const double H = hardening.largest_slope();
+      constants.push_back({"the initial yield stress",
+                           hardening.yield_stress(0.),
+                           "GPa",
+                           {"Yield stress"},
+                           Sign::positive});
+      constants.push_back({"the steepest hardening slope H",
+                           H,
+                           "GPa",
+                           {"Hardening curve"},
+                           Sign::non_negative});
+      constants.push_back({"the return mapping's 3G + H",
+                           3. * moduli.shear_modulus + H,
+                           "GPa",
+                           {"Hardening curve", "Young's modulus"},
+                           Sign::positive});
+      return constants;
     }
 
 

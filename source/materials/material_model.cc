@@ -1,3 +1,4 @@
+#include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/materials/stress_kernel.h>
 
@@ -26,6 +27,33 @@ namespace rubberdyn
     MaterialModel<dim>::create_stress_kernel() const
     {
       return nullptr;
+    }
+
+
+
+    template <int dim>
+    void
+    check_derived_constants(const MaterialModel<dim> &law,
+                            const std::string        &path)
+    {
+      for (const DerivedConstant &constant : law.derived_constants())
+        {
+          Assert(!constant.entries.empty(),
+                 ExcMessage("a derived constant must name its entries"));
+          // "'Poisson's ratio' and 'Density'"
+          std::string others;
+          for (unsigned int i = 1; i < constant.entries.size(); ++i)
+            others += std::string(i == 1                           ? "'" :
+                                  i + 1 == constant.entries.size() ? " and '" :
+                                                                     ", '") +
+                      constant.entries[i] + "'";
+          parameter_tools::require_usable(constant.value,
+                                          path + "/" + constant.entries[0],
+                                          constant.what,
+                                          constant.unit,
+                                          constant.sign,
+                                          others);
+        }
     }
 
 
@@ -87,6 +115,10 @@ namespace rubberdyn
 
     template class MaterialModel<2>;
     template class MaterialModel<3>;
+    template void
+    check_derived_constants<2>(const MaterialModel<2> &, const std::string &);
+    template void
+    check_derived_constants<3>(const MaterialModel<3> &, const std::string &);
 
     namespace internal
     {

@@ -134,7 +134,12 @@ namespace rubberdyn
           throw InputError(path + "/Model",
                            "unknown material model '" + name +
                              "'; valid names are " + pattern_string());
-        return factory<dim>(it->second)(prm, path);
+        std::unique_ptr<MaterialModel<dim>> law =
+          factory<dim>(it->second)(prm, path);
+        // Every law, also one added later, has its moduli, wave speed and
+        // whatever else it derives checked here, before anything runs.
+        check_derived_constants(*law, path);
+        return law;
       }
 
       template std::unique_ptr<MaterialModel<2>>

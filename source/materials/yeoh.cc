@@ -141,6 +141,9 @@ namespace rubberdyn
       else
         {
           double G = 0.;
+          shear_entry = (constants_from == "initial shear modulus" ?
+                           "Initial shear modulus" :
+                           "Shore A hardness");
           if (constants_from == "initial shear modulus")
             {
               G = prm.get_double("Initial shear modulus");
@@ -176,6 +179,8 @@ namespace rubberdyn
       else
         {
           double K = 0.;
+          bulk_entry = (volumetric_model == "bulk modulus" ? "Bulk modulus" :
+                                                             "Poisson's ratio");
           if (volumetric_model == "bulk modulus")
             {
               K = prm.get_double("Bulk modulus");
@@ -240,6 +245,50 @@ namespace rubberdyn
     Yeoh<dim>::reference_wave_speed() const
     {
       return std::sqrt((bulk_modulus() + 4. / 3. * shear_modulus()) / rho);
+    }
+
+
+
+    template <int dim>
+    std::vector<DerivedConstant>
+    Yeoh<dim>::derived_constants() const
+    {
+      using parameter_tools::Sign;
+      const bool from_coefficients = (shear_entry == "C10");
+      // With 'Poisson's ratio', K is computed from G as well.
+      std::vector<std::string> bulk_from = {bulk_entry};
+      if (bulk_entry == "Poisson's ratio")
+        bulk_from.push_back(shear_entry);
+      return {{"the density", rho, "kg/mm^3", {"Density"}, Sign::positive},
+              {"C10", C10, "GPa", {shear_entry}, Sign::positive},
+              // As they enter dW/dI1 and its derivative.
+              {"2 C20",
+               2. * C20,
+               "GPa",
+               {from_coefficients ? "C20" : shear_entry},
+               Sign::any},
+              {"6 C30",
+               6. * C30,
+               "GPa",
+               {from_coefficients ? "C30" : shear_entry},
+               Sign::any},
+              {"the shear modulus G = 2 C10",
+               shear_modulus(),
+               "GPa",
+               {shear_entry},
+               Sign::positive},
+              {"the bulk modulus K = 2/d1",
+               bulk_modulus(),
+               "GPa",
+               bulk_from,
+               Sign::positive},
+              {"1/d2", inverse_d[1], "GPa", {"D2"}, Sign::non_negative},
+              {"1/d3", inverse_d[2], "GPa", {"D3"}, Sign::non_negative},
+              {"the dilatational wave speed sqrt((K + 4G/3)/density)",
+               reference_wave_speed(),
+               "mm/ms",
+               {shear_entry, bulk_entry, "Density"},
+               Sign::positive}};
     }
 
 

@@ -6,6 +6,7 @@
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/studies/material_point.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -88,10 +89,105 @@ namespace rubberdyn
 
 
     void
+    MaterialPoint::compute(const std::function<void(const Row &)> &row) const
+    {
+      const unsigned int  n_state = material->n_state_variables();
+      std::vector<double> state_old(n_state), state_new(n_state);
+      material->initialize_state(dealii::make_array_view(state_old));
+
+      const double start_load = (mode == hd::Mode::simple_shear ? 0. : 1.);
+      double       mu         = 1.;
+      const unsigned int n_total = (unload ? 2 * n_steps : n_steps);
+      materials::MaterialResponse<3> response;
+      for (unsigned int step = 0; step <= n_total; ++step)
+        {
+          const double fraction =
+            (step <= n_steps ? double(step) / n_steps :
+                               double(n_total - step) / n_steps);
+          const double load =
+            start_load + fraction * (final_load - start_load);
+          // A state the law cannot reach (Newton fails, the material
+          // inverts) or a result that is not finite is bad input: the
+          // stretch, or a constant of the specimen, is out of range.
+          const auto refuse = [&](const std::string &what) {
+            throw InputError(
+              "Material point/Final stretch",
+              "the specimen cannot be taken to load " +
+                parameter_tools::format_short(load) + " (step " +
+                std::to_string(step) + " of " + std::to_string(n_total) +
+                "): " + what +
+                "; the stretch or a constant in 'Materials/Specimen' is out "
+                "of range");
+          };
+          try
+            {
+              mu = hd::solve(*material,
+                             mode,
+                             load,
+                             mu,
+                             dealii::make_array_view(std::as_const(state_old)),
+                             dealii::make_array_view(state_new),
+                             response);
+            }
+          catch (const InputError &)
+            {
+              throw;
+            }
+          catch (const std::exception &error)
+            {
+              refuse(error.what());
+            }
+          state_old = state_new;
+
+          Row r;
+          r.step = step;
+          r.load = load;
+          r.F    = hd::deformation_gradient(mode, load, mu);
+          r.J    = dealii::determinant(r.F);
+          r.tau  = response.kirchhoff_stress;
+          // First Piola-Kirchhoff P = tau F^{-T}.
+          r.P = dealii::Tensor<2, 3>(r.tau) *
+                dealii::transpose(dealii::invert(r.F));
+          r.strain_energy_density = response.strain_energy_density;
+          r.equivalent_plastic_strain =
+            (n_state == materials::finite_strain_j2::n_state_variables ?
+               state_new[materials::finite_strain_j2::
+                           equivalent_plastic_strain_index] :
+               0.);
+          r.wave_speed = response.dilatational_wave_speed;
+
+          bool finite = std::isfinite(r.J) && std::isfinite(r.tau.norm()) &&
+                        std::isfinite(r.P.norm()) &&
+                        std::isfinite(r.strain_energy_density) &&
+                        std::isfinite(r.wave_speed) && r.J > 0.;
+          if (!finite)
+            refuse("the deformation or the response is not finite (J = " +
+                   parameter_tools::format_short(r.J) + ", |tau| = " +
+                   parameter_tools::format_short(r.tau.norm()) + " GPa)");
+          row(r);
+        }
+    }
+
+
+
+    void
+    MaterialPoint::check(std::ostream &)
+    {
+      // The whole load path is cheap: compute it, write nothing.
+      compute([](const Row &) {});
+    }
+
+
+
+    void
     MaterialPoint::run(std::ostream &log)
     {
       log << "Material point study, specimen material:\n  ";
       material->print_constants(log);
+
+      // First without writing, so that a load path the specimen cannot
+      // follow is refused before anything is written.
+      check(log);
 
       std::filesystem::create_directories(output_directory);
       const std::string filename = output_directory + "/material_point.csv";
@@ -103,60 +199,25 @@ namespace rubberdyn
              "equivalent_plastic_strain,wave_speed\n";
       csv << std::setprecision(10);
 
-      const unsigned int  n_state = material->n_state_variables();
-      std::vector<double> state_old(n_state), state_new(n_state);
-      material->initialize_state(dealii::make_array_view(state_old));
-
-      const double start_load = (mode == hd::Mode::simple_shear ? 0. : 1.);
-      double       mu         = 1.;
-      const unsigned int n_total = (unload ? 2 * n_steps : n_steps);
-      materials::MaterialResponse<3> response;
-      double last_load = 0., last_J = 1., last_nominal_stress = 0.;
-      for (unsigned int step = 0; step <= n_total; ++step)
-        {
-          const double fraction =
-            (step <= n_steps ? double(step) / n_steps :
-                               double(n_total - step) / n_steps);
-          const double load =
-            start_load + fraction * (final_load - start_load);
-          mu = hd::solve(*material,
-                         mode,
-                         load,
-                         mu,
-                         dealii::make_array_view(std::as_const(state_old)),
-                         dealii::make_array_view(state_new),
-                         response);
-          state_old = state_new;
-
-          const dealii::Tensor<2, 3> F = hd::deformation_gradient(mode, load, mu);
-          const double               J = dealii::determinant(F);
-          const dealii::SymmetricTensor<2, 3> &tau = response.kirchhoff_stress;
-          // First Piola-Kirchhoff P = tau F^{-T}.
-          const dealii::Tensor<2, 3> P =
-            dealii::Tensor<2, 3>(tau) * dealii::transpose(dealii::invert(F));
-          const double alpha =
-            (n_state == materials::finite_strain_j2::n_state_variables ?
-               state_new[materials::finite_strain_j2::
-                           equivalent_plastic_strain_index] :
-               0.);
-          csv << step << ',' << load << ',' << F[0][0] << ',' << F[1][1]
-              << ',' << F[2][2] << ',' << F[0][1] << ',' << J << ','
-              << tau[0][0] / J << ',' << tau[1][1] / J << ',' << tau[2][2] / J
-              << ',' << tau[0][1] / J << ',' << P[0][0] << ','
-              << response.strain_energy_density << ',' << alpha << ','
-              << response.dilatational_wave_speed << '\n';
-          last_load           = load;
-          last_J              = J;
-          last_nominal_stress = P[0][0];
-        }
-      log << "Wrote " << n_total + 1 << " steps to " << filename << std::endl;
-      log << "Final state: load " << parameter_tools::format_short(last_load)
-          << ", J = " << parameter_tools::format_short(last_J)
+      Row last;
+      compute([&](const Row &r) {
+        const double J = r.J;
+        csv << r.step << ',' << r.load << ',' << r.F[0][0] << ',' << r.F[1][1]
+            << ',' << r.F[2][2] << ',' << r.F[0][1] << ',' << J << ','
+            << r.tau[0][0] / J << ',' << r.tau[1][1] / J << ','
+            << r.tau[2][2] / J << ',' << r.tau[0][1] / J << ',' << r.P[0][0]
+            << ',' << r.strain_energy_density << ','
+            << r.equivalent_plastic_strain << ',' << r.wave_speed << '\n';
+        last = r;
+      });
+      log << "Wrote " << last.step + 1 << " steps to " << filename << std::endl;
+      log << "Final state: load " << parameter_tools::format_short(last.load)
+          << ", J = " << parameter_tools::format_short(last.J)
           << ", nominal stress P_11 = "
-          << parameter_tools::format_short(last_nominal_stress)
+          << parameter_tools::format_short(last.P[0][0])
           << " GPa, strain energy density = "
-          << parameter_tools::format_short(response.strain_energy_density)
-          << " GPa" << std::endl;
+          << parameter_tools::format_short(last.strain_energy_density) << " GPa"
+          << std::endl;
     }
 
     RUBBERDYN_REGISTER_STUDY(

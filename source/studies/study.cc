@@ -16,10 +16,8 @@ namespace rubberdyn
   namespace studies
   {
     void
-    Study::check(std::ostream &log)
-    {
-      log << "The parameters are valid." << std::endl;
-    }
+    Study::check(std::ostream &)
+    {}
 
 
 
@@ -99,6 +97,15 @@ namespace rubberdyn
         const auto        it   = entries().find(name);
         if (it == entries().end())
           throw InputError("Study", "unknown study '" + name + "'");
+        // Every study writes below it: an empty name would put the results
+        // in the root directory ("" + "/file").
+        prm.enter_subsection("Output");
+        const bool no_directory = prm.get("Output directory").empty();
+        prm.leave_subsection();
+        if (no_directory)
+          throw InputError("Output/Output directory",
+                           "must not be empty (use '.' for the working "
+                           "directory)");
         return it->second.create(prm, parameter_file);
       }
     } // namespace registry

@@ -1,16 +1,26 @@
-# Run rubberdyn on INPUT and require a clean failure (see CMakeLists.txt).
+# Run rubberdyn [ARGUMENTS] INPUT and require a clean failure (see
+# CMakeLists.txt).
 if(NOT DEFINED EXPECT)
   file(STRINGS ${INPUT} _first LIMIT_COUNT 1)
   string(REGEX REPLACE "^# EXPECT: " "" EXPECT "${_first}")
 endif()
-file(REMOVE_RECURSE results_should_not_exist)
-execute_process(COMMAND ${EXECUTABLE} ${INPUT}
+# The test's own directory, emptied first: it must stay empty.
+file(GLOB _old_files "*")
+if(_old_files)
+  file(REMOVE_RECURSE ${_old_files})
+endif()
+if(NOT DEFINED ARGUMENTS)
+  set(ARGUMENTS "")
+endif()
+execute_process(COMMAND ${EXECUTABLE} ${ARGUMENTS} ${INPUT}
   RESULT_VARIABLE _status OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
 include(${CMAKE_CURRENT_LIST_DIR}/../check_clean_failure.cmake)
 require_clean_failure("${_status}" "${_err}" "${EXPECT}")
 if(NOT _err MATCHES "${INPUT}")
   message(FATAL_ERROR "the message does not name the input file")
 endif()
-if(EXISTS results_should_not_exist)
-  message(FATAL_ERROR "results were written despite the bad input")
+file(GLOB _written "*")
+if(EXISTS results_should_not_exist OR _written)
+  message(FATAL_ERROR "results were written despite the bad input: "
+    "${_written}")
 endif()

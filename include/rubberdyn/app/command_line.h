@@ -12,6 +12,9 @@ namespace rubberdyn
      * Interpret the command line and do what it asks:
      *
      * - `rubberdyn FILE.prm`: run the study the file describes;
+     * - `rubberdyn --check FILE.prm`: read and validate the file and build
+     *   its study (Study::check()) without running it or writing anything;
+     *   one line on stdout and exit code 0 if it would run;
      * - `rubberdyn --default`: run the default study, every parameter at
      *   its default;
      * - `rubberdyn --print-parameters`: print every parameter with its

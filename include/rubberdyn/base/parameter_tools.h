@@ -24,10 +24,50 @@ namespace rubberdyn
 
     /**
      * Throw an InputError naming @p path if @p value is not strictly
-     * positive.
+     * positive, or not a usable number (see is_usable_number()).
      */
     void
     require_positive(const double value, const std::string &path);
+
+    /**
+     * Whether @p value can be computed with: finite and, unless zero, a
+     * normal double. NaN, infinity and denormals (magnitude below
+     * 2.2e-308, e.g. 1e-320, which have lost precision and turn into
+     * infinity when inverted) are not.
+     */
+    bool
+    is_usable_number(const double value);
+
+    /** The sign a quantity must have. */
+    enum class Sign
+    {
+      positive,
+      non_negative,
+      any
+    };
+
+    /**
+     * Throw an InputError naming @p path unless @p value is a usable number
+     * (is_usable_number()) of sign @p sign. For quantities derived from the
+     * input, so that an overflow (G = 2 C10 = inf for C10 = 1e308) or an
+     * underflow is refused before anything runs.
+     *
+     * @param value The derived quantity.
+     * @param path Full path of the entry it is derived from.
+     * @param what The quantity and how it is derived, for the message,
+     *   e.g. "the shear modulus G = 2 C10".
+     * @param unit Its unit, e.g. "GPa", or empty.
+     * @param sign The sign it must have.
+     * @param also_from Other entries it is computed from, for the
+     *   message, e.g. "'Poisson's ratio' and 'Density'".
+     */
+    void
+    require_usable(const double       value,
+                   const std::string &path,
+                   const std::string &what,
+                   const std::string &unit,
+                   const Sign         sign      = Sign::positive,
+                   const std::string &also_from = "");
   } // namespace parameter_tools
 } // namespace rubberdyn
 

@@ -52,6 +52,11 @@ namespace rubberdyn
       double
       bulk_modulus() const override;
 
+      /** The density, G, K and the wave speed (see
+       * finite_strain_j2::derived_constants()). */
+      std::vector<DerivedConstant>
+      derived_constants() const override;
+
       void
       print_constants(std::ostream &out) const override;
 

@@ -74,6 +74,19 @@ namespace rubberdyn
       ElasticModuli
       read_elastic_moduli(const ParameterHandler &prm, const std::string &path);
 
+      /**
+       * The derived constants of the elastic part (see
+       * MaterialModel::derived_constants()): the density, G and K from
+       * `Young's modulus` and `Poisson's ratio`, and the wave speed
+       * $\sqrt{(K + \tfrac43 G)/\rho}$.
+       */
+      std::vector<DerivedConstant>
+      derived_constants(const ElasticModuli &moduli);
+
+      /** The wave speed $\sqrt{(K + \tfrac43 G)/\rho}$ (mm/ms). */
+      double
+      reference_wave_speed(const ElasticModuli &moduli);
+
       /** History of a virgin point: $\bar C_p^{-1} = I$, $\alpha = 0$. */
       void
       initialize_state(const ArrayView<double> &state);

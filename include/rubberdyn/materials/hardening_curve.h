@@ -26,7 +26,8 @@ namespace rubberdyn
        *   non-unique and the solution mesh-dependent.
        * @param path Parameter path for error messages.
        *
-       * @throws InputError if the table is not increasing.
+       * @throws InputError if the table is not increasing, or a point or a
+       *   slope is not a finite normal number.
        */
       HardeningCurve(const double               yield_stress,
                      const std::vector<double> &plastic_strains,
@@ -63,6 +64,10 @@ namespace rubberdyn
       solve_return(const double q_trial,
                    const double mu_bar,
                    const double alpha_old) const;
+
+      /** The steepest slope of the table (GPa), 0 if perfectly plastic. */
+      double
+      largest_slope() const;
 
       /** Describe the curve, e.g. for the log. */
       std::string

@@ -60,6 +60,14 @@ namespace rubberdyn
       double
       bulk_modulus() const override;
 
+      /**
+       * The elastic constants (see finite_strain_j2::derived_constants()),
+       * the yield stress, the steepest hardening slope H and the return
+       * mapping's denominator 3G + H.
+       */
+      std::vector<DerivedConstant>
+      derived_constants() const override;
+
       void
       print_constants(std::ostream &out) const override;
 

@@ -5,9 +5,12 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <rubberdyn/base/parameter_tools.h>
+
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -60,6 +63,32 @@ namespace rubberdyn
        * solver's stable time step uses, $\Delta t \le l / c$.
        */
       double dilatational_wave_speed = 0.;
+    };
+
+
+    /**
+     * A constant that a law computes from its input (a modulus, a wave
+     * speed, a slope), with the entries it comes from, so that a value that
+     * overflows or underflows is refused with a message naming them (see
+     * check_derived_constants()).
+     */
+    struct DerivedConstant
+    {
+      /** The quantity and how it is derived, e.g. "the shear modulus G =
+       * 2 C10". */
+      std::string what;
+      /** Its value. */
+      double value;
+      /** Its unit, e.g. "GPa" (empty if dimensionless). */
+      std::string unit;
+      /**
+       * The entries of the law's subsection it is computed from, the one
+       * most likely at fault first (e.g. {"Young's modulus", "Poisson's
+       * ratio"}).
+       */
+      std::vector<std::string> entries;
+      /** The sign it must have. */
+      parameter_tools::Sign sign = parameter_tools::Sign::positive;
     };
 
 
@@ -143,6 +172,17 @@ namespace rubberdyn
       bulk_modulus() const = 0;
 
       /**
+       * Every constant the law computes from its input and uses: at least
+       * the density, G, K and the reference wave speed, and whatever else
+       * the law derives (coefficients, inverse compliances, hardening
+       * slopes), each with the entries it comes from.
+       * registry::create() refuses a law whose constants are not all
+       * finite, normal and of their sign (check_derived_constants()).
+       */
+      virtual std::vector<DerivedConstant>
+      derived_constants() const = 0;
+
+      /**
        * Write the resolved constants (what the law actually uses, after
        * conversions from the user's input) to @p out, one per line.
        */
@@ -158,6 +198,18 @@ namespace rubberdyn
       virtual std::unique_ptr<StressKernel>
       create_stress_kernel() const;
     };
+
+
+    /**
+     * Throw an InputError unless every one of @p law's derived_constants()
+     * is a finite, normal number of its sign. The error names the first
+     * entry the offending constant comes from, under @p path (the law's
+     * subsection, e.g. "Materials/Rubber"), and mentions the others.
+     */
+    template <int dim>
+    void
+    check_derived_constants(const MaterialModel<dim> &law,
+                            const std::string        &path);
 
 
     /**

@@ -100,6 +100,16 @@ namespace rubberdyn
       double
       bulk_modulus() const override;
 
+      /**
+       * The density, C10, 2 C20 and 6 C30 (the largest multiples in the
+       * stress and the tangent), G, K, 1/d2, 1/d3 and the reference wave
+       * speed, each with the entries it comes from ('C10', 'Initial shear
+       * modulus' or 'Shore A hardness'; 'D1', 'Bulk modulus' or 'Poisson's
+       * ratio').
+       */
+      std::vector<DerivedConstant>
+      derived_constants() const override;
+
       void
       print_constants(std::ostream &out) const override;
 
@@ -120,6 +130,13 @@ namespace rubberdyn
       std::array<double, 3> inverse_d;
 
       double rho;
+
+      /**
+       * The entries C10 (and C20, C30) and the bulk modulus come from, for
+       * error messages: 'C10', 'Initial shear modulus' or 'Shore A
+       * hardness'; 'D1', 'Bulk modulus' or 'Poisson's ratio'.
+       */
+      std::string shear_entry = "C10", bulk_entry = "D1";
     };
   } // namespace materials
 } // namespace rubberdyn

@@ -5,6 +5,7 @@
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/studies/study.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -37,7 +38,41 @@ namespace rubberdyn
       void
       run(std::ostream &log) override;
 
+      /**
+       * Take the specimen through the whole load path without writing
+       * anything (it is cheap).
+       *
+       * @throws InputError naming `Material point/Final stretch` if a state
+       *   cannot be computed (the homogeneous solve fails, the material
+       *   inverts) or a result is not finite.
+       */
+      void
+      check(std::ostream &log) override;
+
     private:
+      /** The state at one step of the load path. */
+      struct Row
+      {
+        unsigned int                  step = 0;
+        double                        load = 0.;
+        dealii::Tensor<2, 3>          F;
+        double                        J = 1.;
+        dealii::SymmetricTensor<2, 3> tau;
+        dealii::Tensor<2, 3>          P;
+        double                        strain_energy_density     = 0.;
+        double                        equivalent_plastic_strain = 0.;
+        double                        wave_speed                = 0.;
+      };
+
+      /**
+       * Take the specimen through the load path, calling @p row at every
+       * step (loading, then unloading if asked).
+       *
+       * @throws InputError as check().
+       */
+      void
+      compute(const std::function<void(const Row &)> &row) const;
+
       std::unique_ptr<materials::MaterialModel<3>> material;
       materials::homogeneous_deformation::Mode     mode;
       double                                       final_load;

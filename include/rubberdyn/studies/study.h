@@ -18,7 +18,8 @@ namespace rubberdyn
   /**
    * Studies: what `rubberdyn FILE.prm` runs. A study reads all of its
    * parameters (and rejects bad ones) in its constructor, before anything
-   * is written, and does its work in run().
+   * is written, and does its work in run(); `rubberdyn --check FILE.prm`
+   * constructs it and calls check() instead.
    */
   namespace studies
   {
@@ -38,10 +39,18 @@ namespace rubberdyn
       run(std::ostream &log) = 0;
 
       /**
-       * Validate without running (`rubberdyn --check`): the constructor has
-       * read and checked the parameters; a study with a model builds it
-       * here (mesh, parts, conditions, contacts) and reports it. Writes no
-       * results.
+       * Validate the study as far as is possible without running it, and
+       * without writing any file: what `rubberdyn --check FILE.prm` does
+       * after construction, so that a user learns of bad input before
+       * submitting a long job. A study may override it to build its model
+       * (mesh, parts, conditions, contacts) and compute what the run needs
+       * first (the first stable time step), throwing an InputError that
+       * names the entry at fault; it may write a short summary to @p log.
+       *
+       * The default does nothing: construction has read and validated
+       * every parameter already.
+       *
+       * @throws InputError on invalid input.
        */
       virtual void
       check(std::ostream &log);
