@@ -79,10 +79,11 @@ main(int argc, char **argv)
                                   std::array<double, 3>{{1. / 0.331, 0., 0.}},
                                   1.1e-6);
   elements::SolidHexElements elements;
-  elements.initialize(dof_handler, partitioner, {{0, &rubber}},
-                      {fbar ? elements::Formulation::fbar :
-                              elements::Formulation::displacement,
-                       0.06, 1.5});
+  elements.initialize(dof_handler, partitioner,
+                      {{{0}, &rubber,
+                        fbar ? elements::Formulation::fbar :
+                               elements::Formulation::displacement}},
+                      {0.06, 1.5});
 
   // 20 % axial compression with the incompressible lateral expansion,
   // plus a shear, and a compressing velocity field (bulk viscosity on).

@@ -11,6 +11,8 @@
 #include "hex_lanes.h"
 
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
 // Set-up, lumped mass, reference steps and output averages of the
 // hexahedra; the per-step force kernel is in solid_hex_forces.cc.
@@ -23,19 +25,37 @@ namespace rubberdyn
     SolidHexElements::initialize(
       const DoFHandler<3, 3> &                                   dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      const std::map<types::material_id, const materials::MaterialModel<3> *>
-        &                    material_by_id,
-      const ElementSettings &settings_in)
+      const std::vector<ElementGroup> &                          groups_in,
+      const ElementSettings &                                    settings_in)
     {
       settings = settings_in;
-      laws.clear();
-      kernels.clear();
-      std::map<types::material_id, unsigned int> law_index;
-      for (const auto &entry : material_by_id)
+      groups.clear();
+      std::map<types::material_id, unsigned int> group_of_id;
+      for (unsigned int g = 0; g < groups_in.size(); ++g)
         {
-          law_index[entry.first] = laws.size();
-          laws.push_back(entry.second);
-          kernels.push_back(materials::create_stress_kernel(*entry.second));
+          const ElementGroup &group = groups_in[g];
+          if (group.law == nullptr)
+            throw std::invalid_argument("SolidHexElements: element group " +
+                                        std::to_string(g) +
+                                        " has no material law");
+          for (const types::material_id id : group.material_ids)
+            {
+              const auto inserted = group_of_id.emplace(id, g);
+              if (!inserted.second)
+                throw std::invalid_argument(
+                  "SolidHexElements: material id " + std::to_string(id) +
+                  " is in element groups " +
+                  std::to_string(inserted.first->second) + " and " +
+                  std::to_string(g));
+            }
+          const bool fbar = (group.formulation == Formulation::fbar);
+          groups.push_back(
+            {group.law,
+             group.formulation,
+             materials::create_stress_kernel(*group.law),
+             group.law->density(),
+             fbar ? settings.fbar_stabilization * group.law->bulk_modulus() :
+                    0.});
         }
 
       const FiniteElement<3> &fe = dof_handler.get_fe();
@@ -74,38 +94,38 @@ namespace rubberdyn
       FEValues<3>  fe_centre(mapping, fe, centre, update_inverse_jacobians);
       std::vector<types::global_dof_index> dof_indices(24);
 
-      // The cells of each law, in the order of the cell iterator.
+      // The cells of each group, in the order of the cell iterator; cells
+      // of material ids in no group (rigid parts) get no element.
       std::vector<std::vector<typename DoFHandler<3>::active_cell_iterator>>
-        cells_of_law(laws.size());
+        cells_of_group(groups.size());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const auto law = law_index.find(cell->material_id());
-            if (law == law_index.end())
-              throw InputError("mesh",
-                               "no material law for material id " +
-                                 std::to_string(cell->material_id()));
-            cells_of_law[law->second].push_back(cell);
+            const auto group = group_of_id.find(cell->material_id());
+            if (group != group_of_id.end())
+              cells_of_group[group->second].push_back(cell);
           }
 
       blocks.clear();
       elements.clear();
       unsigned int history_size = 0;
-      for (unsigned int law = 0; law < laws.size(); ++law)
-        for (unsigned int first = 0; first < cells_of_law[law].size();
+      for (unsigned int group = 0; group < groups.size(); ++group)
+        for (unsigned int first = 0; first < cells_of_group[group].size();
              first += lanes)
           {
             internal::HexBlock block;
-            block.law            = law;
+            block.group          = group;
             block.history_offset = history_size;
-            block.n_active =
-              std::min<unsigned int>(lanes, cells_of_law[law].size() - first);
-            history_size += n_q * lanes * laws[law]->n_state_variables();
+            block.n_active       = std::min<unsigned int>(
+              lanes, cells_of_group[group].size() - first);
+            history_size +=
+              n_q * lanes * groups[group].law->n_state_variables();
             for (unsigned int l = 0; l < lanes; ++l)
               {
-                // Unused lanes repeat the block's first element.
+                // Unused lanes repeat the block's first element (finite
+                // arithmetic only; the kernel ignores them).
                 const auto &cell =
-                  cells_of_law[law][first + (l < block.n_active ? l : 0)];
+                  cells_of_group[group][first + (l < block.n_active ? l : 0)];
                 fe_values.reinit(cell);
                 fe_centre.reinit(cell);
                 cell->get_dof_indices(dof_indices);
@@ -147,13 +167,22 @@ namespace rubberdyn
       history_old.assign(history_size, 0.);
       for (const internal::HexBlock &block : blocks)
         {
-          const unsigned int n_state = laws[block.law]->n_state_variables();
+          const materials::MaterialModel<3> &law = *groups[block.group].law;
+          const unsigned int n_state = law.n_state_variables();
           for (unsigned int p = 0; p < n_q * lanes; ++p)
-            laws[block.law]->initialize_state(ArrayView<double>(
+            law.initialize_state(ArrayView<double>(
               history_old.data() + block.history_offset + p * n_state,
               n_state));
         }
       history_new = history_old;
+    }
+
+
+
+    unsigned int
+    SolidHexElements::n_groups() const
+    {
+      return groups.size();
     }
 
 
@@ -177,7 +206,7 @@ namespace rubberdyn
         {
           const internal::HexBlock &block = blocks[elements[e].block];
           const unsigned int        l     = elements[e].lane;
-          const double rho = laws[block.law]->density() * density_scaling[e];
+          const double rho = groups[block.group].density * density_scaling[e];
           for (unsigned int a = 0; a < n_nodes; ++a)
             {
               double integral = 0.;
@@ -192,18 +221,18 @@ namespace rubberdyn
 
 
     std::vector<double>
-    SolidHexElements::mass_by_law(
+    SolidHexElements::mass_by_group(
       const std::vector<double> &density_scaling) const
     {
-      std::vector<double> masses(laws.size(), 0.);
+      std::vector<double> masses(groups.size(), 0.);
       for (unsigned int e = 0; e < elements.size(); ++e)
         {
           const internal::HexBlock &block  = blocks[elements[e].block];
           double                    volume = 0.;
           for (unsigned int q = 0; q < n_q; ++q)
             volume += block.JxW[q][elements[e].lane];
-          masses[block.law] +=
-            laws[block.law]->density() * density_scaling[e] * volume;
+          masses[block.group] +=
+            groups[block.group].density * density_scaling[e] * volume;
         }
       return masses;
     }
@@ -224,9 +253,18 @@ namespace rubberdyn
               X[a][d] = lanes_of::load(block.X[a][d]);
           const lanes_of::Lanes length =
             lanes_of::characteristic_length(X, volume);
+          // The F-bar stabilisation adds kappa / r_c to the longitudinal
+          // modulus rho_0 c^2, as in the force kernel (doc/theory.md
+          // section 8.3; r = 1 without a collapse check).
+          const GroupData &group = groups[block.group];
+          const double     r_c   = settings.fbar_collapse_ratio > 0. ?
+                                     settings.fbar_collapse_ratio :
+                                     1.;
+          const double c = std::sqrt(
+            std::pow(group.law->reference_wave_speed(), 2) +
+            group.stabilization_modulus / (group.density * r_c));
           for (unsigned int l = 0; l < block.n_active; ++l)
-            steps[block.element[l]] =
-              length[l] / laws[block.law]->reference_wave_speed();
+            steps[block.element[l]] = length[l] / c;
         }
       return steps;
     }
@@ -261,13 +299,14 @@ namespace rubberdyn
       averages.jacobian.assign(n_active_cells, 0.f);
       constexpr unsigned int row[6] = {0, 1, 2, 0, 0, 1};
       constexpr unsigned int col[6] = {0, 1, 2, 1, 2, 2};
-      const bool fbar = (settings.formulation == Formulation::fbar);
       std::vector<double>            scratch;
       materials::MaterialResponse<3> response;
       for (const internal::HexBlock &block : blocks)
         {
-          const materials::MaterialModel<3> &law = *laws[block.law];
-          const unsigned int n_state             = law.n_state_variables();
+          const materials::MaterialModel<3> &law = *groups[block.group].law;
+          const bool         fbar =
+            (groups[block.group].formulation == Formulation::fbar);
+          const unsigned int n_state = law.n_state_variables();
           scratch.resize(n_state);
           lanes_of::Lanes ue[n_nodes][3], F0[3][3], G[3][3], J0;
           lanes_of::gather(block, u.begin(), ue);

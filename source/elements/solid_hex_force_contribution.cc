@@ -36,13 +36,17 @@ namespace rubberdyn
                                VectorType &                  f,
                                model::ContributionResults &  results)
     {
-      step_result = ElementStepResult();
+      // compute_forces() overwrites every member of step_result, which is
+      // kept across steps so that its per-group vector is allocated once.
       elements.compute_forces(point.displacement, point.velocity, scaling, f,
                               step_result);
       results.internal_energy += step_result.internal_energy;
-      // One group until the elements report energies per group.
-      if (!results.internal_energy_by_group.empty())
-        results.internal_energy_by_group[0] += step_result.internal_energy;
+      // The element groups are the model's parts, in the same order.
+      for (unsigned int g = 0; g < step_result.internal_energy_by_group.size() &&
+                               g < results.internal_energy_by_group.size();
+           ++g)
+        results.internal_energy_by_group[g] +=
+          step_result.internal_energy_by_group[g];
       results.bulk_viscosity_power += step_result.bulk_viscosity_power;
       results.element_time_step =
         std::min(results.element_time_step, step_result.min_time_step);

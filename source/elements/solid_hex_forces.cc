@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
+#include <string>
 
 // The explicit hot loop: internal forces, energy, bulk viscosity and stable
 // step of the hexahedra, four elements per pass (see doc/theory.md, section
@@ -24,16 +27,19 @@ namespace rubberdyn
       static_assert(n_points == materials::StressKernel::batch_size,
                     "a block's Gauss points must fill one law batch");
 
-      // What a block evaluation returns per lane.
+      // What a block evaluation returns per lane. Every member is written
+      // for every lane (padding lanes report no failure), also when the
+      // evaluation fails; force, energy, power and step only when it
+      // succeeds.
       struct BlockResult
       {
-        double force[n_nodes][3][L];
-        double energy[L];
-        double bulk_viscosity_power[L];
-        double time_step[L];
-        // 0: fine; 1: J0 <= 0 at the centre; 2: J <= 0 at a Gauss point;
-        // 3: the law failed.
-        unsigned int failure[L];
+        double      force[n_nodes][3][L];
+        double      energy[L];
+        double      bulk_viscosity_power[L];
+        double      time_step[L];
+        // Smallest J_q / J0 of the lane's Gauss points (F-bar), else 1.
+        double      min_volume_ratio[L];
+        FailureKind failure[L];
       };
 
       // Settings of one call, gathered to keep the kernel's argument list
@@ -46,19 +52,27 @@ namespace rubberdyn
         const double *                   v;
         const double *                   history_old;
         double *                         history_new;
+        /** Reference density of the block's group (kg/mm^3). */
         double                           density;
         double                           bulk_viscosity_linear;
         double                           bulk_viscosity_quadratic;
-        bool                             fbar;
         /** kappa of the F-bar volumetric stabilisation (GPa), 0: none. */
         double                           stabilization_modulus;
+        /** F-bar collapse threshold on J_q / J0, 0: no check. */
+        double                           collapse_ratio;
       };
 
-      RUBBERDYN_VECTOR_CLONES void
-      evaluate_block(const HexBlock &    block,
-                     const BlockContext &context,
-                     const double        density_scaling[L],
-                     BlockResult &       result)
+      // One block of one formulation. Returns false if an active lane
+      // failed (result.failure says which and why); padding lanes
+      // (l >= block.n_active) never fail: their failure is masked, and the
+      // law sees F = I there, so that its first failing point is always an
+      // active lane's.
+      template <bool fbar>
+      inline __attribute__((always_inline)) bool
+      evaluate_block_of(const HexBlock &    block,
+                        const BlockContext &context,
+                        const double        density_scaling[L],
+                        BlockResult &       result)
       {
         using namespace lanes_of;
         const internal::ReferenceShapes &reference = *context.reference;
@@ -95,33 +109,65 @@ namespace rubberdyn
         // law's layout (point q L + l).
         double F_bar[9 * n_points];
         Lanes  G[n_q][3][3], J[n_q];
-        // J_q / J0: the F-bar scale and the stabilisation's measure.
+        // F-bar: r_q = J_q / J0, the scale, the stabilisation's measure
+        // and the collapse indicator.
         Lanes volume_ratio[n_q];
-        Lanes  min_J = J0;
+        Lanes min_J     = J0;
+        Lanes min_ratio = broadcast(std::numeric_limits<double>::max());
         for (unsigned int q = 0; q < n_q; ++q)
           {
             Lanes F[3][3];
             deformation_gradient(H[q], block.inverse_jacobian[q], F);
             determinant_and_inverse_transpose(F, J[q], G[q]);
-            // NaN-safe minimum: a NaN J makes min_J NaN.
+            // NaN-safe minima: a NaN makes them NaN.
             min_J = (J[q] > min_J) ? min_J : J[q];
-            volume_ratio[q] = J[q] / J0;
-            const Lanes scale = context.fbar ?
-                                  inverse_cube_root(volume_ratio[q]) :
-                                  broadcast(1.);
+            // (One store loop for both formulations: GCC unrolls this one,
+            // but not a bare copy loop, which costs 100 instructions per
+            // element.)
+            Lanes scale = broadcast(1.);
+            if constexpr (fbar)
+              {
+                volume_ratio[q] = J[q] / J0;
+                min_ratio =
+                  (volume_ratio[q] > min_ratio) ? min_ratio : volume_ratio[q];
+                scale = inverse_cube_root(volume_ratio[q]);
+              }
             for (unsigned int r = 0; r < 3; ++r)
               for (unsigned int c = 0; c < 3; ++c)
                 store(scale * F[r][c], &F_bar[(3 * r + c) * n_points + q * L]);
           }
+        if constexpr (fbar)
+          store(min_ratio, result.min_volume_ratio);
+        else
+          store(broadcast(1.), result.min_volume_ratio);
 
-        bool any_failure = false;
+        // Inversion, then the F-bar collapse (doc/theory.md section 8.1),
+        // for the active lanes only.
+        bool failed = false;
         for (unsigned int l = 0; l < L; ++l)
           {
-            result.failure[l] = !(J0[l] > 0.) ? 1 : !(min_J[l] > 0.) ? 2 : 0;
-            any_failure |= (result.failure[l] != 0);
+            FailureKind kind = FailureKind::none;
+            if (l < block.n_active)
+              {
+                if (!(J0[l] > 0.))
+                  kind = FailureKind::inverted_centre;
+                else if (!(min_J[l] > 0.))
+                  kind = FailureKind::inverted_gauss_point;
+                else if (fbar && !(min_ratio[l] >= context.collapse_ratio))
+                  kind = FailureKind::fbar_collapse;
+              }
+            result.failure[l] = kind;
+            failed |= (kind != FailureKind::none);
           }
-        if (any_failure)
-          return;
+        if (failed)
+          return false;
+
+        // Padding lanes: the law at F = I.
+        for (unsigned int l = block.n_active; l < L; ++l)
+          for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int r = 0; r < 3; ++r)
+              for (unsigned int c = 0; c < 3; ++c)
+                F_bar[(3 * r + c) * n_points + q * L + l] = (r == c ? 1. : 0.);
 
         // The law at all points of the block at once.
         double tau[6 * n_points], energy[n_points], wave_speed[n_points];
@@ -131,8 +177,9 @@ namespace rubberdyn
                                    wave_speed);
         if (failed_point < n_points)
           {
-            result.failure[failed_point % L] = 3;
-            return;
+            Assert(failed_point % L < block.n_active, ExcInternalError());
+            result.failure[failed_point % L] = FailureKind::law_failed;
+            return false;
           }
 
         // Energy, current volume, largest wave speed; length scale, bulk
@@ -167,26 +214,76 @@ namespace rubberdyn
         // F-bar volumetric stabilisation: U(r) = kappa/2 (r + 1/r - 2) per
         // unit reference volume, r = J_q / J0 (doc/theory.md, section 8.1);
         // its Kirchhoff pressure r U'(r) = kappa/2 (r - 1/r) enters the
-        // forces below.
-        const double kappa = context.fbar ? context.stabilization_modulus : 0.;
-        Lanes stabilization_pressure[n_q];
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const Lanes r             = volume_ratio[q];
-            const Lanes inverse_r     = 1. / r;
-            stabilization_pressure[q] = 0.5 * kappa * (r - inverse_r);
-            element_energy +=
-              load(block.JxW[q]) * (0.5 * kappa * (r + inverse_r - 2.));
-          }
+        // forces below, and its longitudinal modulus r^2 U''(r) = kappa / r
+        // the wave speed of the stable step (section 8.3): rho0 c^2 +=
+        // kappa / r_c with r_c the collapse ratio, a bound for every state
+        // the element accepts (r >= r_c). Not the current min_q r_q: that
+        // oscillates with the very mode it bounds, and a step modulated at
+        // that frequency pumps energy into it (seen: +75 % in 8000 steps).
+        // Without a collapse check (r_c = 0), min_q r_q is all there is.
+        const double kappa = fbar ? context.stabilization_modulus : 0.;
+        Lanes        stabilization_pressure[n_q];
+        Lanes        step_wave_speed = c;
+        if constexpr (fbar)
+          if (kappa > 0.)
+            {
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  const Lanes r             = volume_ratio[q];
+                  const Lanes inverse_r     = 1. / r;
+                  stabilization_pressure[q] = 0.5 * kappa * (r - inverse_r);
+                  element_energy +=
+                    load(block.JxW[q]) * (0.5 * kappa * (r + inverse_r - 2.));
+                }
+              step_wave_speed =
+                sqrt(c * c + kappa / (context.density * scaling *
+                                      (context.collapse_ratio > 0. ?
+                                         broadcast(context.collapse_ratio) :
+                                         min_ratio)));
+            }
         store(element_energy, result.energy);
-        store(bulk_pressure * rate * volume, result.bulk_viscosity_power);
-        store(length / (Q + sqrt(Q * Q + c * c)), result.time_step);
+        store(length / (Q + sqrt(Q * Q + step_wave_speed * step_wave_speed)),
+              result.time_step);
+
+        // Power of the viscous force actually applied, sum_a f_a . v_a. Its
+        // force is -q sum_q w_q J_q g_a(q). F-bar: the pressure's deviator
+        // vanishes, so f_a = -q V g0_a and the power is q V rate. The
+        // displacement element takes div v at the Gauss points,
+        // div_q v = (dv/dxi dxi/dX) : F^{-T}.
+        if constexpr (fbar)
+          store(bulk_pressure * rate * volume, result.bulk_viscosity_power);
+        else
+          {
+            bool any_compressing = false;
+            for (unsigned int l = 0; l < L; ++l)
+              any_compressing |= (bulk_pressure[l] != 0.);
+            Lanes weighted_divergence = {};
+            if (any_compressing)
+              {
+                Lanes Hv[n_q][3][3], Hv0[3][3];
+                reference_gradients(ve, Hv, Hv0);
+                for (unsigned int q = 0; q < n_q; ++q)
+                  {
+                    Lanes divergence = {};
+                    for (unsigned int r = 0; r < 3; ++r)
+                      for (unsigned int c = 0; c < 3; ++c)
+                        divergence +=
+                          G[q][r][c] *
+                          (Hv[q][r][0] * load(block.inverse_jacobian[q][0][c]) +
+                           Hv[q][r][1] * load(block.inverse_jacobian[q][1][c]) +
+                           Hv[q][r][2] * load(block.inverse_jacobian[q][2][c]));
+                    weighted_divergence +=
+                      load(block.JxW[q]) * J[q] * divergence;
+                  }
+              }
+            store(-bulk_pressure * weighted_divergence,
+                  result.bulk_viscosity_power);
+          }
 
         // Forces f_a = sum_q B_q dN_a/dxi(q) + S g0_a (see the class
-        // documentation); 1/3 of the trace enters with F-bar only.
-        const double third = context.fbar ? 1. / 3. : 0.;
-        Lanes        S     = {};
-        Lanes        B[n_q][3][3];
+        // documentation); 1/3 of the trace and S with F-bar only.
+        Lanes S = {};
+        Lanes B[n_q][3][3];
         for (unsigned int q = 0; q < n_q; ++q)
           {
             // Bulk viscosity as an added Kirchhoff pressure q J.
@@ -198,14 +295,18 @@ namespace rubberdyn
             A[0][1] = A[1][0] = load(&tau[3 * n_points + q * L]);
             A[0][2] = A[2][0] = load(&tau[4 * n_points + q * L]);
             A[1][2] = A[2][1] = load(&tau[5 * n_points + q * L]);
-            // (1/3 tr tau - p_stab) replaces 1/3 tr tau: the stabilisation
-            // force is sum_q w_q p_stab (g_a - g0_a).
-            const Lanes third_trace = third * (A[0][0] + A[1][1] + A[2][2]) -
-                                      stabilization_pressure[q];
-            const Lanes w           = load(block.JxW[q]);
-            S += w * third_trace;
-            for (unsigned int r = 0; r < 3; ++r)
-              A[r][r] -= third_trace;
+            const Lanes w = load(block.JxW[q]);
+            if constexpr (fbar)
+              {
+                // (1/3 tr tau - p_stab) replaces 1/3 tr tau: the
+                // stabilisation force is sum_q w_q p_stab (g_a - g0_a).
+                Lanes third_trace = (1. / 3.) * (A[0][0] + A[1][1] + A[2][2]);
+                if (kappa > 0.)
+                  third_trace -= stabilization_pressure[q];
+                S += w * third_trace;
+                for (unsigned int r = 0; r < 3; ++r)
+                  A[r][r] -= third_trace;
+              }
             // B = w A F^{-T} (dxi/dX)^T.
             Lanes AG[3][3];
             for (unsigned int r = 0; r < 3; ++r)
@@ -220,9 +321,68 @@ namespace rubberdyn
           }
         Lanes force[n_nodes][3] = {};
         add_reference_divergence(B, force);
+        // S = 0 for the displacement element (a bare copy loop would not
+        // be unrolled).
         for (unsigned int a = 0; a < n_nodes; ++a)
           for (unsigned int r = 0; r < 3; ++r)
             store(force[a][r] + S * g0[a][r], result.force[a][r]);
+        return true;
+      }
+
+
+
+      // The formulation is chosen per block (all lanes of a block belong
+      // to one group); both are compiled into each clone.
+      RUBBERDYN_VECTOR_CLONES bool
+      evaluate_block(const HexBlock &    block,
+                     const bool          fbar,
+                     const BlockContext &context,
+                     const double        density_scaling[L],
+                     BlockResult &       result)
+      {
+        return fbar ?
+                 evaluate_block_of<true>(block, context, density_scaling,
+                                         result) :
+                 evaluate_block_of<false>(block, context, density_scaling,
+                                          result);
+      }
+
+
+
+      // The user's message for a failed element.
+      std::string
+      failure_message(const FailureKind      kind,
+                      const double           volume_ratio,
+                      const ElementSettings &settings)
+      {
+        const auto number = [](const double x) {
+          std::ostringstream s;
+          s << std::setprecision(3) << x;
+          return s.str();
+        };
+        switch (kind)
+          {
+            case FailureKind::inverted_centre:
+              return "det F <= 0 at the element centre";
+            case FailureKind::inverted_gauss_point:
+              return "det F <= 0 at a Gauss point";
+            case FailureKind::law_failed:
+              return "the material law failed (det F <= 0 or not finite)";
+            case FailureKind::fbar_collapse:
+              return "F-bar hull collapse: the volume J of a Gauss point "
+                     "is " +
+                     number(volume_ratio) + " of the element centre's (limit " +
+                     number(settings.fbar_collapse_ratio) +
+                     "), the results are no longer physical; " +
+                     (settings.fbar_stabilization < 0.03 ?
+                        std::string("set Time integration/F-bar "
+                                    "stabilization to 0.03 or more") :
+                        "raise Time integration/F-bar stabilization above " +
+                          number(settings.fbar_stabilization));
+            case FailureKind::none:
+              break;
+          }
+        return "";
       }
     } // namespace
 
@@ -235,52 +395,73 @@ namespace rubberdyn
                                      VectorType &               f,
                                      ElementStepResult &        result)
     {
+      result.internal_energy = 0.;
+      result.internal_energy_by_group.assign(groups.size(), 0.);
+      result.bulk_viscosity_power = 0.;
+      result.min_time_step        = std::numeric_limits<double>::max();
+      result.min_volume_ratio     = 1.;
+      result.failure.failed       = false;
+      result.failure.kind         = FailureKind::none;
+      result.failure.cell_id.clear();
+      result.failure.position = Point<3>();
+      result.failure.message.clear();
+
       BlockContext context;
       context.reference                = &reference;
       context.u                        = u.begin();
       context.v                        = v.begin();
       context.bulk_viscosity_linear    = settings.bulk_viscosity_linear;
       context.bulk_viscosity_quadratic = settings.bulk_viscosity_quadratic;
-      context.fbar = (settings.formulation == Formulation::fbar);
+      context.collapse_ratio           = settings.fbar_collapse_ratio;
       double *const force = f.begin();
 
       BlockResult block_result;
       for (const internal::HexBlock &block : blocks)
         {
-          context.kernel      = kernels[block.law].get();
-          context.density     = laws[block.law]->density();
-          context.stabilization_modulus =
-            settings.fbar_stabilization * laws[block.law]->bulk_modulus();
+          const GroupData &group        = groups[block.group];
+          context.kernel                = group.kernel.get();
+          context.density               = group.density;
+          context.stabilization_modulus = group.stabilization_modulus;
           context.history_old = history_old.data() + block.history_offset;
           context.history_new = history_new.data() + block.history_offset;
           double scaling[L];
           for (unsigned int l = 0; l < L; ++l)
             scaling[l] = density_scaling[block.element[l]];
 
-          evaluate_block(block, context, scaling, block_result);
+          const bool ok = evaluate_block(block,
+                                         group.formulation == Formulation::fbar,
+                                         context,
+                                         scaling,
+                                         block_result);
+          for (unsigned int l = 0; l < block.n_active; ++l)
+            result.min_volume_ratio = std::min(result.min_volume_ratio,
+                                               block_result.min_volume_ratio[l]);
+          if (!ok)
+            {
+              // Report the first failed element; this block adds nothing.
+              for (unsigned int l = 0;
+                   l < block.n_active && !result.failure.failed;
+                   ++l)
+                if (block_result.failure[l] != FailureKind::none)
+                  {
+                    const ElementInfo &element = elements[block.element[l]];
+                    result.failure.failed      = true;
+                    result.failure.kind        = block_result.failure[l];
+                    result.failure.cell_id     = element.cell_id;
+                    result.failure.position    = element.centre;
+                    result.failure.message =
+                      failure_message(block_result.failure[l],
+                                      block_result.min_volume_ratio[l],
+                                      settings);
+                  }
+              continue;
+            }
 
-          bool failed = false;
-          for (unsigned int l = 0; l < block.n_active && !failed; ++l)
-            if (block_result.failure[l] != 0)
-              {
-                static const char *what[4] = {
-                  "",
-                  "det F <= 0 at the element centre",
-                  "det F <= 0 at a Gauss point",
-                  "the material law failed (det F <= 0 or not finite)"};
-                const ElementInfo &element = elements[block.element[l]];
-                result.failure = {true,
-                                  element.cell_id,
-                                  element.centre,
-                                  what[block_result.failure[l]]};
-                failed         = true;
-              }
-          if (failed)
-            continue;
-
+          double group_energy = 0.;
           for (unsigned int l = 0; l < block.n_active; ++l)
             {
               result.internal_energy += block_result.energy[l];
+              group_energy += block_result.energy[l];
               result.bulk_viscosity_power +=
                 block_result.bulk_viscosity_power[l];
               result.min_time_step =
@@ -289,6 +470,7 @@ namespace rubberdyn
                 for (unsigned int d = 0; d < 3; ++d)
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];
             }
+          result.internal_energy_by_group[block.group] += group_energy;
         }
     }
   } // namespace elements

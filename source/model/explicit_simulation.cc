@@ -121,25 +121,19 @@ namespace rubberdyn
     {
       const MPI_Comm comm = model.comm;
 
-      // Elements of every part.
-      std::map<types::material_id, const materials::MaterialModel<3> *>
-        material_by_id;
+      // Elements: one group per part (its law and formulation).
+      std::vector<elements::ElementGroup> groups;
       for (const Part &part : model.parts)
-        for (const types::material_id id : part.material_ids)
-          material_by_id[id] = part.law.get();
-      for (const Part &part : model.parts)
-        if (part.formulation != model.parts[0].formulation)
-          throw InputError("Parts/" + part.name + "/Element formulation",
-                           "all parts must use the same element formulation "
-                           "for now");
+        groups.push_back({part.material_ids, part.law.get(), part.formulation});
+      elements::ElementSettings element_settings;
+      element_settings.bulk_viscosity_linear =
+        time_integration.bulk_viscosity_linear;
+      element_settings.bulk_viscosity_quadratic =
+        time_integration.bulk_viscosity_quadratic;
+      element_settings.fbar_stabilization = time_integration.fbar_stabilization;
       elements = std::make_unique<elements::SolidHexElements>();
-      elements->initialize(
-        model.dof_handler, model.partitioner, material_by_id,
-        {model.parts.empty() ? elements::Formulation::fbar :
-                               model.parts[0].formulation,
-         time_integration.bulk_viscosity_linear,
-         time_integration.bulk_viscosity_quadratic,
-         time_integration.fbar_stabilization});
+      elements->initialize(model.dof_handler, model.partitioner, groups,
+                           element_settings);
 
       // Mass scaling: elements whose stable step is below the target get
       // added density.
@@ -157,9 +151,9 @@ namespace rubberdyn
         }
       element_forces =
         std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
-      added_mass_by_part = elements->mass_by_law(density_scaling);
+      added_mass_by_part = elements->mass_by_group(density_scaling);
       {
-        const std::vector<double> physical = elements->mass_by_law(
+        const std::vector<double> physical = elements->mass_by_group(
           std::vector<double>(density_scaling.size(), 1.));
         for (unsigned int i = 0; i < added_mass_by_part.size(); ++i)
           added_mass_by_part[i] -= physical[i];

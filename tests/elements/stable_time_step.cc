@@ -65,7 +65,7 @@ main(int argc, char **argv)
       const double exact = volume / max_area / c;
 
       rubberdyn::elements::SolidHexElements elements;
-      elements.initialize(dof_handler, partitioner, {{0, &steel}}, {});
+      elements.initialize(dof_handler, partitioner, {{{0}, &steel, rubberdyn::elements::Formulation::fbar}}, {});
       const double reference = elements.reference_time_steps()[0];
 
       rubberdyn::VectorType u(partitioner), v(partitioner),

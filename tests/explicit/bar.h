@@ -147,8 +147,8 @@ namespace bar
    * rigid @p surfaces (none by default), one rigid body per surface (held:
    * the caller may give them mass, freedom and velocity before the first
    * run), the kinematic constraints that @p add_constraints adds (none by
-   * default), and the solver without mass scaling and with default
-   * settings.
+   * default), and the solver without mass scaling and with @p settings
+   * (default settings unless given).
    */
   struct ExplicitBar
   {
@@ -158,6 +158,7 @@ namespace bar
       const std::set<types::boundary_id> &                 contact_ids = {},
       const std::vector<rubberdyn::contact::RigidSurface> &surfaces    = {},
       const double                                         penalty_scale = 1.,
+      const rubberdyn::time_integration::ExplicitSettings &settings      = {},
       const std::function<void(
         rubberdyn::time_integration::KinematicConstraints &)> &add_constraints =
         {})
@@ -166,7 +167,7 @@ namespace bar
     {
       elements.initialize(bar.dof_handler,
                           bar.partitioner,
-                          {{0, &law}},
+                          {{{0}, &law, rubberdyn::elements::Formulation::fbar}},
                           rubberdyn::elements::ElementSettings());
       contact.initialize(bar.dof_handler,
                          bar.partitioner,
@@ -191,7 +192,7 @@ namespace bar
         bodies,
         &constraints,
         bar.partitioner,
-        rubberdyn::time_integration::ExplicitSettings(),
+        settings,
         bar.comm);
     }
 
@@ -316,7 +317,7 @@ namespace bar
    *
    * The arrivals of the front at @p stations are those of FrontTracker.
    * The run ends at @p end_time (ms), before the reflection from the free
-   * end returns to any station.
+   * end returns to any station. The solver runs with @p settings.
    */
   inline FrontArrivals
   step_load_front(const Bar                                    &bar,
@@ -325,7 +326,9 @@ namespace bar
                   const double                                  penalty_scale,
                   const bool                                    confined,
                   const std::vector<double>                    &stations,
-                  const double                                  end_time)
+                  const double                                  end_time,
+                  const rubberdyn::time_integration::ExplicitSettings
+                    &settings = {})
   {
     const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
     std::set<types::boundary_id>                  ids    = {boundary::z_min};
@@ -341,7 +344,7 @@ namespace bar
         planes.push_back({Point<3>(0., 0., 0.), ey});
         planes.push_back({Point<3>(0., a, 0.), -ey});
       }
-    ExplicitBar model(bar, material, ids, planes, penalty_scale);
+    ExplicitBar model(bar, material, ids, planes, penalty_scale, settings);
     // The pusher; the confining planes stay held.
     model.bodies[0].mass        = 1e6;
     model.bodies[0].free[2]     = true;

@@ -68,7 +68,7 @@ main(int argc, char **argv)
 
   // No contact, no bodies; the end z = 0 fixed.
   bar::ExplicitBar model_solver(
-    model, steel, {}, {}, 1., [](ti::KinematicConstraints &constraints) {
+    model, steel, {}, {}, 1., {}, [](ti::KinematicConstraints &constraints) {
       constraints.fix("fixed end", bar::boundary::z_min);
     });
   ti::ExplicitSolver &            solver      = *model_solver.solver;

@@ -84,7 +84,7 @@ main(int argc, char **argv)
   // No contact, no bodies; symmetry planes on the sides, the end z = 0
   // driven at v0.
   bar::ExplicitBar model_solver(
-    model, steel, {}, {}, 1., [v0](ti::KinematicConstraints &constraints) {
+    model, steel, {}, {}, 1., {}, [v0](ti::KinematicConstraints &constraints) {
       constraints.symmetry_plane("symmetry x = 0", bar::boundary::x_min, 0);
       constraints.symmetry_plane("symmetry x = a", bar::boundary::x_max, 0);
       constraints.symmetry_plane("symmetry y = 0", bar::boundary::y_min, 1);

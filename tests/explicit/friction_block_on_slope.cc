@@ -92,7 +92,7 @@ namespace
 
     const materials::Elastic<3> block(0.05, 0.3, 1e-6);
     elements::SolidHexElements  hexes;
-    hexes.initialize(dof_handler, partitioner, {{0, &block}},
+    hexes.initialize(dof_handler, partitioner, {{{0}, &block, elements::Formulation::fbar}},
                      elements::ElementSettings());
     contact::RigidSurfaceContact floor;
     floor.initialize(dof_handler, partitioner, {4}, {block.bulk_modulus()},

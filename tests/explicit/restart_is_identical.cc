@@ -49,7 +49,7 @@ namespace
       geometry::make_standing_cylinder(triangulation, 25., 24., refinement);
       dof_handler.distribute_dofs(fe);
       partitioner = rubberdyn::ghosted_partitioner(dof_handler);
-      elements.initialize(dof_handler, partitioner, {{0, &metal}},
+      elements.initialize(dof_handler, partitioner, {{{0}, &metal, elements::Formulation::fbar}},
                           elements::ElementSettings());
       const Tensor<1, 3> up({0., 0., 1.});
       plates.initialize(dof_handler, partitioner, {0, 1, 2},

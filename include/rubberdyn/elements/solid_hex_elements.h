@@ -9,8 +9,9 @@
 #include <rubberdyn/materials/stress_kernel.h>
 
 #include <limits>
-#include <map>
 #include <memory>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace dealii
@@ -54,9 +55,11 @@ namespace rubberdyn
       };
 
       /**
-       * Geometry of `lanes` elements of one law in structure-of-arrays
+       * Geometry of `lanes` elements of one group in structure-of-arrays
        * layout, the last index being the lane. Unused lanes of the last block
-       * of a law repeat its first element and are never scattered.
+       * of a group repeat its first element, only so that their arithmetic
+       * stays finite: the kernel evaluates the law at F = I there and never
+       * reports, sums or scatters them.
        */
       struct HexBlock
       {
@@ -76,8 +79,8 @@ namespace rubberdyn
         unsigned int element[lanes];
         /** Number of lanes in use. */
         unsigned int n_active;
-        /** Index of the law. */
-        unsigned int law;
+        /** Index of the element group (all lanes of a block share it). */
+        unsigned int group;
         /**
          * History of Gauss point q of lane l starts at history_offset + (q
          * lanes + l) n_state.
@@ -88,29 +91,74 @@ namespace rubberdyn
 
 
 
+    /** Why an element failed. */
+    enum class FailureKind
+    {
+      none,
+      /** det F <= 0 (or not finite) at the element centre. */
+      inverted_centre,
+      /** det F <= 0 (or not finite) at a Gauss point. */
+      inverted_gauss_point,
+      /** The material law could not evaluate F (det F <= 0, not finite). */
+      law_failed,
+      /**
+       * F-bar only: a Gauss point's volume ratio J_q / J_0 fell below
+       * ElementSettings::fbar_collapse_ratio (the hull instability of
+       * doc/theory.md section 8.1).
+       */
+      fbar_collapse
+    };
+
     /** Where and why an element failed. */
     struct ElementFailure
     {
       /** Whether any element failed in this evaluation. */
       bool failed = false;
+      /** Why (FailureKind::none if nothing failed). */
+      FailureKind kind = FailureKind::none;
       /** The cell, as level.index. */
       std::string cell_id;
       /** Its centre in the reference configuration (mm). */
       Point<3> position;
-      /** The material law's message. */
+      /**
+       * What happened, in one line for the user; for a collapse it names
+       * the entry to change.
+       */
       std::string message;
     };
 
-    /** What one evaluation of all elements returns besides the forces. */
+    /**
+     * What one evaluation of all elements returns besides the forces.
+     * SolidHexElements::compute_forces() overwrites every member; keep one
+     * object across steps so that internal_energy_by_group is allocated
+     * once.
+     */
     struct ElementStepResult
     {
-      /** Stored strain energy (J = kN mm). */
+      /** Stored strain energy of this rank's elements (J = kN mm). */
       double internal_energy = 0.;
-      /** Power dissipated by bulk viscosity (kN mm / ms). */
+      /**
+       * The same per element group, in the order of the groups given to
+       * SolidHexElements::initialize() (J); its sum is internal_energy up
+       * to round-off.
+       */
+      std::vector<double> internal_energy_by_group;
+      /**
+       * Power of the bulk-viscosity forces actually applied,
+       * $\sum_a f^{visc}_a \cdot v_a$ with the velocities the forces were
+       * computed with (kN mm / ms = J/ms); it is the rate of work the
+       * viscous forces take out of the system.
+       */
       double bulk_viscosity_power = 0.;
       /** Smallest stable element time step (ms). */
       double min_time_step = std::numeric_limits<double>::max();
-      /** Set if an element inverted. */
+      /**
+       * Smallest Gauss-point volume ratio $J_q/J_0$ of the F-bar elements
+       * (1 if there are none): the margin to
+       * ElementSettings::fbar_collapse_ratio.
+       */
+      double min_volume_ratio = 1.;
+      /** Set if an element failed (the first one in element order). */
       ElementFailure failure;
     };
 
@@ -123,10 +171,21 @@ namespace rubberdyn
       fbar
     };
 
-    /** Parameters of the element layer. */
+    /**
+     * One part of a model as the element layer sees it: the cells whose
+     * material id is in @p material_ids get elements of @p formulation
+     * evaluated with @p law.
+     */
+    struct ElementGroup
+    {
+      std::set<types::material_id>       material_ids;
+      const materials::MaterialModel<3> *law = nullptr;
+      Formulation                        formulation = Formulation::fbar;
+    };
+
+    /** Parameters of the element layer, common to all groups. */
     struct ElementSettings
     {
-      Formulation formulation = Formulation::fbar;
       /** Linear bulk viscosity coefficient (LS-DYNA Q2, default 0.06). */
       double bulk_viscosity_linear = 0.06;
       /** Quadratic bulk viscosity coefficient (LS-DYNA Q1, default 1.5). */
@@ -138,6 +197,17 @@ namespace rubberdyn
        * which F-bar otherwise leaves to the shear stiffness alone.
        */
       double fbar_stabilization = 0.;
+      /**
+       * F-bar only: an element fails (FailureKind::fbar_collapse) when the
+       * volume ratio $r_q = J_q/J_0$ of one of its Gauss points falls below
+       * this value (-); 0: never. F-bar's hull instability drives $r_q$ to
+       * about 0.1 while $J_0$ stays near 1 and the run would go on with a
+       * collapsed, unphysical mesh; healthy deep-compression runs stay above
+       * about 0.75 (doc/theory.md section 8.1). It also bounds the
+       * stabilisation's stiffness, kappa / r_q <= kappa / r_c, in the stable
+       * step (section 8.3). Range [0, 1).
+       */
+      double fbar_collapse_ratio = 0.25;
     };
 
     /**
@@ -162,33 +232,44 @@ namespace rubberdyn
      *
      * Bulk viscosity (LS-DYNA style): in compression a pressure
      * $q = \rho\,l\,(C_q\,l\,\dot\varepsilon_v^2 - C_l\,c\,\dot\varepsilon_v)$
-     * is added at every Gauss point; its work is reported. The stable step
-     * of an element is $\Delta t_e = l / (Q + \sqrt{Q^2 + c^2})$, $Q = C_l c
-     * + C_q l |\dot\varepsilon_v|$ in compression, $l$ = volume / largest
-     * face area (current configuration), $c$ the largest current
-     * dilatational wave speed of its Gauss points.
+     * is added at every Gauss point; the power of the force it gives is
+     * reported. The stable step of an element is $\Delta t_e = l / (Q +
+     * \sqrt{Q^2 + c^2})$, $Q = C_l c + C_q l |\dot\varepsilon_v|$ in
+     * compression, $l$ = volume / largest face area (current configuration),
+     * $c$ the largest current dilatational wave speed of its Gauss points,
+     * with the stiffness of the F-bar stabilisation added (doc/theory.md
+     * sections 8.1, 8.3).
+     *
+     * A model has several element groups (parts), each with its own law and
+     * formulation; blocks never mix groups, and each block is evaluated with
+     * its group's formulation. Cells of material ids in no group get no
+     * element (rigid parts).
      */
     class SolidHexElements
     {
     public:
       /**
        * Precompute element data for the locally owned cells of
-       * @p dof_handler (FESystem of three FE_Q(1)).
+       * @p dof_handler (FESystem of three FE_Q(1)): one element per cell whose
+       * material id is in one of @p groups, none for the other cells.
        *
-       * @param material_by_id Law of each material id present in the mesh.
+       * @throw std::invalid_argument if a material id is in two groups or a
+       *   group has no law (the caller validates user input before).
        */
       void
-      initialize(const DoFHandler<3, 3> &                         dof_handler,
+      initialize(const DoFHandler<3, 3> &dof_handler,
                  const std::shared_ptr<const Utilities::MPI::Partitioner>
-                   &                                               partitioner,
-                 const std::map<types::material_id,
-                                const materials::MaterialModel<3> *>
-                   &                    material_by_id,
-                 const ElementSettings &settings);
+                   &                                partitioner,
+                 const std::vector<ElementGroup> &groups,
+                 const ElementSettings &          settings);
+
+      /** Number of element groups, as given to initialize(). */
+      unsigned int
+      n_groups() const;
 
       /**
-       * Number of locally owned elements. Elements are numbered law by law
-       * (the numbering of density_scaling and reference_time_steps()).
+       * Number of locally owned elements. Elements are numbered group by
+       * group (the numbering of density_scaling and reference_time_steps()).
        */
       unsigned int
       n_elements() const;
@@ -202,17 +283,18 @@ namespace rubberdyn
       add_lumped_mass(VectorType &mass, const std::vector<double> &density_scaling) const;
 
       /**
-       * Mass (kg) of this rank's elements of each law (in the order of the
-       * laws' material ids), with the densities scaled by
-       * @p density_scaling; the caller sums over ranks. The difference with
-       * and without scaling is the added mass of mass scaling per part.
+       * Mass (kg) of this rank's elements of each group, with the densities
+       * scaled by @p density_scaling; the caller sums over ranks. The
+       * difference with and without scaling is the added mass of mass
+       * scaling per part.
        */
       std::vector<double>
-      mass_by_law(const std::vector<double> &density_scaling) const;
+      mass_by_group(const std::vector<double> &density_scaling) const;
 
       /**
        * Stable time step of each element in the reference configuration,
-       * without bulk viscosity (for mass scaling).
+       * without bulk viscosity, with the F-bar stabilisation's stiffness
+       * (for mass scaling).
        */
       std::vector<double>
       reference_time_steps() const;
@@ -220,8 +302,10 @@ namespace rubberdyn
       /**
        * Internal forces at displacement @p u (ghosted), with bulk viscosity
        * from velocity @p v (ghosted), added into @p f (ghost entries
-       * included), and the new history. Elements that invert are reported
-       * in the result, not thrown.
+       * included), and the new history. Elements that fail (inversion,
+       * F-bar collapse) are reported in @p result, not thrown; the forces of
+       * a failed element are not added. @p result is overwritten
+       * (ElementStepResult).
        *
        * @param density_scaling Mass-scaling factor per element (wave speed
        *   divided by its square root).
@@ -279,13 +363,24 @@ namespace rubberdyn
         Point<3>    centre;
       };
 
-      internal::ReferenceShapes              reference;
-      std::vector<internal::HexBlock>         blocks;
-      std::vector<ElementInfo>                elements;
-      std::vector<const materials::MaterialModel<3> *>       laws;
-      std::vector<std::unique_ptr<materials::StressKernel>> kernels;
-      ElementSettings                         settings;
-      std::vector<double>                     history_old, history_new;
+      /** Per group, what the kernel needs. */
+      struct GroupData
+      {
+        const materials::MaterialModel<3> *     law;
+        Formulation                             formulation;
+        std::unique_ptr<materials::StressKernel> kernel;
+        /** Reference density (kg/mm^3). */
+        double density;
+        /** kappa = beta K of the F-bar stabilisation (GPa); 0: none. */
+        double stabilization_modulus;
+      };
+
+      internal::ReferenceShapes       reference;
+      std::vector<internal::HexBlock> blocks;
+      std::vector<ElementInfo>        elements;
+      std::vector<GroupData>          groups;
+      ElementSettings                 settings;
+      std::vector<double>             history_old, history_new;
     };
   } // namespace elements
 } // namespace rubberdyn
