@@ -6,6 +6,7 @@
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -103,6 +104,65 @@ namespace rubberdyn
       }
 
       constexpr const char *component_names[3] = {"x", "y", "z"};
+
+      /**
+       * The reaction columns of every boundary condition
+       * (postprocess::BoundaryReactionColumns: six per condition, force
+       * then moment) with, in those of a pressure or traction condition,
+       * the load's resultant force and moment on the body
+       * (SurfaceLoads::resultants(), summed over the ranks at output times
+       * only).
+       */
+      class ReactionAndLoadColumns : public postprocess::Postprocessor
+      {
+      public:
+        ReactionAndLoadColumns(
+          std::unique_ptr<postprocess::BoundaryReactionColumns> reactions,
+          const SurfaceLoads *                                  loads,
+          const std::vector<unsigned int> &condition_of_load)
+          : reactions(std::move(reactions))
+          , loads(loads)
+          , condition_of_load(condition_of_load)
+        {}
+
+        std::string
+        name() const override
+        {
+          return reactions->name();
+        }
+
+        std::vector<std::string>
+        history_columns() const override
+        {
+          return reactions->history_columns();
+        }
+
+        void
+        history_values(const postprocess::SimulationView &view,
+                       std::vector<double> &              values) override
+        {
+          const std::size_t first = values.size();
+          reactions->history_values(view, values);
+          if (loads == nullptr)
+            return;
+          // A load condition has no constraint group: its columns are
+          // zero and take the resultant.
+          const std::vector<SurfaceLoads::Resultant> resultants =
+            loads->resultants();
+          for (unsigned int l = 0; l < resultants.size(); ++l)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const std::size_t column = first + 6 * condition_of_load[l];
+                values[column + d] += resultants[l].force[d];
+                values[column + 3 + d] += resultants[l].moment[d];
+              }
+        }
+
+      private:
+        std::unique_ptr<postprocess::BoundaryReactionColumns> reactions;
+        const SurfaceLoads *                                  loads;
+        std::vector<unsigned int>                             condition_of_load;
+      };
     } // namespace
 
 
@@ -231,8 +291,33 @@ namespace rubberdyn
                     zero,
                     false);
                 break;
+              case BoundaryCondition::Type::pressure:
+              case BoundaryCondition::Type::traction:
+                break;
             }
         }
+
+      // Pressures and tractions: one contribution for all of them.
+      {
+        std::vector<BoundaryCondition> loads;
+        for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+          {
+            const BoundaryCondition &bc = model.boundary_conditions[c];
+            if (bc.type == BoundaryCondition::Type::pressure ||
+                bc.type == BoundaryCondition::Type::traction)
+              {
+                loads.push_back(bc);
+                condition_of_load.push_back(c);
+              }
+          }
+        if (!loads.empty())
+          {
+            surface_loads = std::make_unique<SurfaceLoads>(model.dof_handler,
+                                                           model.partitioner,
+                                                           loads);
+            contributions.push_back(surface_loads.get());
+          }
+      }
 
       time_integration::ExplicitSettings settings;
       settings.time_step_scale   = time_integration.time_step_scale;
@@ -288,8 +373,11 @@ namespace rubberdyn
       std::vector<std::string> names;
       for (const BoundaryCondition &bc : model.boundary_conditions)
         names.push_back(bc.name);
-      add_postprocessor(std::make_unique<postprocess::BoundaryReactionColumns>(
-        names, condition_of_group, direction_of_group));
+      add_postprocessor(std::make_unique<ReactionAndLoadColumns>(
+        std::make_unique<postprocess::BoundaryReactionColumns>(
+          names, condition_of_group, direction_of_group),
+        surface_loads.get(),
+        condition_of_load));
       names.clear();
       for (const Part &part : model.parts)
         names.push_back(part.name);

@@ -164,7 +164,8 @@ namespace rubberdyn
       make_function(const std::string &expression,
                     const std::string &constants_text,
                     const unsigned int n_components,
-                    const std::string &path)
+                    const std::string &path,
+                    const std::string &which = "one per listed component")
       {
         const std::vector<std::string> parts =
           Utilities::split_string_list(expression, ';');
@@ -173,7 +174,7 @@ namespace rubberdyn
                            "has " + std::to_string(parts.size()) +
                              " components (separated by ';'), but " +
                              std::to_string(n_components) +
-                             " are needed, one per listed component");
+                             " are needed, " + which);
         std::map<std::string, double> constants;
         for (const std::string &item :
              Utilities::split_string_list(constants_text, ','))
@@ -313,22 +314,34 @@ namespace rubberdyn
                             "of its faces, separated by commas.");
           prm.declare_entry(
             "Type", "fixed",
-            Patterns::Selection("fixed|displacement|velocity|symmetry"),
+            Patterns::Selection(
+              "fixed|displacement|velocity|symmetry|pressure|traction"),
             "'fixed': zero displacement in the Components; 'displacement': "
             "u = Function expression (mm); 'velocity': v = Function "
             "expression (mm/ms); 'symmetry': zero normal displacement of a "
             "plane face normal to a coordinate axis (Components and the "
-            "function are not used).");
+            "function are not used); 'pressure': a follower pressure p = "
+            "Function expression (GPa = kN/mm^2, one scalar expression), "
+            "positive when it pushes on the surface, acting on the current "
+            "(deformed) faces along their normal, f = -p n da; Components "
+            "is not used and must be left at its default; 'traction': a "
+            "load per reference area t = Function expression (GPa, one "
+            "expression per listed component, the others zero), fixed in "
+            "direction, f = t dA. For the loads the reaction columns show "
+            "the load's resultant force and moment on the body. A load may "
+            "share boundary ids with a kinematic condition, e.g. a pressure "
+            "and a prescribed x, y on the same face.");
           prm.declare_entry("Components", "x, y, z", Patterns::Anything(),
                             "The directions it acts on, from x, y, z, "
                             "separated by commas.");
           prm.declare_entry(
             "Function expression", "0", Patterns::Anything(),
-            "For 'displacement' and 'velocity': one expression per listed "
-            "component, separated by ';', of x, y, z (mm, reference "
-            "position) and t (ms), in deal.II's FunctionParser syntax "
-            "(muparser), e.g. '0.1*t; 0' for two components. Must be 0 "
-            "for the other types.");
+            "For 'displacement', 'velocity' and 'traction': one expression "
+            "per listed component, separated by ';'; for 'pressure' one "
+            "scalar expression; of x, y, z (mm, reference position) and t "
+            "(ms), in deal.II's FunctionParser syntax (muparser), e.g. "
+            "'0.1*t; 0' for two components. Must be 0 for the other "
+            "types.");
           prm.declare_entry("Function constants", "", Patterns::Anything(),
                             "Constants used in the expression, e.g. "
                             "'v0 = 2, h = 10'.");
@@ -514,23 +527,36 @@ namespace rubberdyn
                                             1);
           require_boundary_ids(bc.boundary_ids, path + "/Boundary ids");
           const std::string type = prm.get("Type");
-          bc.type = type == "fixed"        ? model::BoundaryCondition::Type::fixed :
-                    type == "displacement" ? model::BoundaryCondition::Type::displacement :
-                    type == "velocity"     ? model::BoundaryCondition::Type::velocity :
-                                             model::BoundaryCondition::Type::symmetry;
+          using Type = model::BoundaryCondition::Type;
+          bc.type = type == "fixed"        ? Type::fixed :
+                    type == "displacement" ? Type::displacement :
+                    type == "velocity"     ? Type::velocity :
+                    type == "pressure"     ? Type::pressure :
+                    type == "traction"     ? Type::traction :
+                                             Type::symmetry;
           bc.components =
             parse_components(prm.get("Components"), path + "/Components");
+          if (bc.type == Type::pressure && bc.components.size() != 3)
+            throw InputError(path + "/Components",
+                             "is not used by Type = pressure (it acts along "
+                             "the surface's normal); leave it at its "
+                             "default x, y, z");
           bc.moment_point =
             Point<3>(parse_vector(prm.get("Moment point"), path + "/Moment point"));
           const std::string expression = prm.get("Function expression");
-          if (bc.type == model::BoundaryCondition::Type::displacement ||
-              bc.type == model::BoundaryCondition::Type::velocity)
+          if (bc.type == Type::displacement || bc.type == Type::velocity ||
+              bc.type == Type::traction || bc.type == Type::pressure)
             {
+              const unsigned int n_functions =
+                bc.type == Type::pressure ? 1 : bc.components.size();
               const std::shared_ptr<FunctionParser<3>> function =
                 make_function(expression, prm.get("Function constants"),
-                              bc.components.size(), path);
+                              n_functions, path,
+                              bc.type == Type::pressure ?
+                                "a pressure is one scalar" :
+                                "one per listed component");
               bc.depends_on_position = uses_position(expression);
-              for (unsigned int k = 0; k < bc.components.size(); ++k)
+              for (unsigned int k = 0; k < n_functions; ++k)
                 bc.functions.push_back(
                   [function, k](const Point<3> &X, const double t) {
                     function->set_time(t);

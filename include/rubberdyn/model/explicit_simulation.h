@@ -37,10 +37,13 @@ namespace rubberdyn
 
   namespace model
   {
+    class SurfaceLoads;
+
     /**
      * The one engine path of explicit dynamics: takes any Model and runs
      * it. It builds the force contributions (elements with mass scaling,
-     * one rigid-surface contact per rigid surface), the kinematic
+     * one rigid-surface contact per rigid surface, one SurfaceLoads for all
+     * pressure and traction conditions), the kinematic
      * constraints of the boundary conditions and the central-difference
      * solver, then advances in time while the postprocessors watch, writing
      * time_history.csv (time, time_step and the plugins' columns), the
@@ -151,6 +154,10 @@ namespace rubberdyn
       std::unique_ptr<time_integration::KinematicConstraints>    constraints;
       std::unique_ptr<time_integration::ExplicitSolver>          explicit_solver;
       std::vector<std::unique_ptr<postprocess::Postprocessor>>   postprocessors;
+      /** The pressure and traction conditions, or nullptr if none. */
+      std::unique_ptr<SurfaceLoads> surface_loads;
+      /** Index of the boundary condition of each load of surface_loads. */
+      std::vector<unsigned int> condition_of_load;
       /** Boundary condition and direction of each constraint group. */
       std::vector<unsigned int> condition_of_group, direction_of_group;
       /** Added mass of mass scaling per part (kg, all ranks). */

@@ -62,7 +62,18 @@ namespace rubberdyn
         /** Velocity v(X, t) (mm/ms) in the listed components. */
         velocity,
         /** Zero normal displacement of a plane face normal to an axis. */
-        symmetry
+        symmetry,
+        /**
+         * Follower pressure p(X, t) (GPa) on the current surface, positive
+         * when it pushes on it; one function, `components` unused
+         * (model::SurfaceLoads).
+         */
+        pressure,
+        /**
+         * Traction t(X, t) per reference area (GPa) in the listed
+         * components (model::SurfaceLoads).
+         */
+        traction
       };
       /** Name (the columns `<name>_force_x` etc.). */
       std::string name;
@@ -73,7 +84,8 @@ namespace rubberdyn
       std::vector<unsigned int> components = {0, 1, 2};
       /**
        * The prescribed value of each component in `components` as a
-       * function of the reference position (mm) and time (ms).
+       * function of the reference position (mm) and time (ms); for a
+       * pressure the one scalar p.
        */
       std::vector<std::function<double(const Point<3> &, double)>> functions;
       /** Whether the functions use the position. */
