@@ -13,6 +13,16 @@ if(NOT _files)
 endif()
 list(GET _files 0 _first)
 
+# It empties its working directory before each case: refuse to run anywhere
+# but the directory ctest gives it (run by hand elsewhere, it would delete
+# that directory's contents).
+get_filename_component(_here "${CMAKE_CURRENT_BINARY_DIR}" NAME)
+if(NOT _here STREQUAL "check_parameter_files")
+  message(FATAL_ERROR "run this script only in its own directory "
+    "'check_parameter_files' (it empties the directory it runs in), not in "
+    "${CMAKE_CURRENT_BINARY_DIR}")
+endif()
+
 function(check_file _file)
   file(GLOB _old "*")
   if(_old)

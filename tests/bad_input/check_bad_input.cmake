@@ -4,7 +4,13 @@ if(NOT DEFINED EXPECT)
   file(STRINGS ${INPUT} _first LIMIT_COUNT 1)
   string(REGEX REPLACE "^# EXPECT: " "" EXPECT "${_first}")
 endif()
-# The test's own directory, emptied first: it must stay empty.
+# The test's own directory, emptied first: it must stay empty. Refuse to
+# empty any other directory (run by hand elsewhere, this would delete it).
+if(NOT CMAKE_CURRENT_BINARY_DIR MATCHES "/tests/bad_input/[^/]+$")
+  message(FATAL_ERROR "run this script only in a test directory "
+    "build/tests/bad_input/<case> (it empties the directory it runs in), "
+    "not in ${CMAKE_CURRENT_BINARY_DIR}")
+endif()
 file(GLOB _old_files "*")
 if(_old_files)
   file(REMOVE_RECURSE ${_old_files})
