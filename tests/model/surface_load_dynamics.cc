@@ -150,7 +150,7 @@ namespace
       partitioner = rubberdyn::ghosted_partitioner(dof_handler);
       elements.initialize(dof_handler,
                           partitioner,
-                          {{0, &law}},
+                          {{{0}, &law, elements::Formulation::fbar}},
                           elements::ElementSettings());
       hex_forces = std::make_unique<elements::SolidHexForces>(
         elements,
