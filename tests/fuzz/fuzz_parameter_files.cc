@@ -4,6 +4,8 @@
 // run. Every case must either succeed or fail cleanly:
 //
 // - no signal (crash, abort), no hang (each case has a time limit);
+// - on success of '--check', stdout ending in the one line that says the
+//   study is valid (a study with a model reports it before);
 // - on failure a non-zero exit code below 100 and exactly one line on
 //   stderr that names the input file and the entry (or subsection) that is
 //   wrong, and for a changed value that entry's full path ("A/B/Name");
@@ -636,9 +638,15 @@ namespace
           {
             if (!o.err.empty())
               return "'--check' succeeded but wrote to stderr";
-            if (count_lines(o.out) != 1)
-              return "'--check' succeeded but did not print exactly one "
-                     "line";
+            // A study with a model reports it first (cells, parts,
+            // masses, smallest step); the last line says it is valid, once.
+            const std::string valid = "' is a valid '";
+            const std::size_t first = o.out.find(valid);
+            if (first == std::string::npos ||
+                o.out.find(valid, first + 1) != std::string::npos ||
+                o.out.find('\n', first) + 1 != o.out.size())
+              return "'--check' succeeded but did not end with one line "
+                     "saying the study is valid";
             if (!empty_directory)
               return "'--check' wrote files";
           }
@@ -661,7 +669,17 @@ namespace
             o.err.find("subsection '") == std::string::npos &&
             o.err.find(", at the top level: ") == std::string::npos)
           return "the message names no entry or subsection";
-        if (!c.entry.empty() && o.err.find(c.entry) == std::string::npos)
+        // The changed entry, or, where the change makes another entry of
+        // the same subsection wrong (an emptied constant list makes the
+        // expression that uses it unparsable, an emptied list of names
+        // leaves its subsections undeclared, an overflowing yield stress
+        // makes a derived constant overflow), that subsection.
+        const std::string subsection =
+          c.entry.find('/') == std::string::npos ?
+            c.entry :
+            c.entry.substr(0, c.entry.rfind('/'));
+        if (!c.entry.empty() && o.err.find(c.entry) == std::string::npos &&
+            o.err.find("'" + subsection) == std::string::npos)
           return "the message does not name the changed entry '" + c.entry +
                  "'";
       }
