@@ -1,0 +1,90 @@
+// Models of the shipped examples built in C++ for the unit tests of
+// tests/model (the .prm files of parameter_files/ transcribed).
+#ifndef rubberdyn_tests_model_model_fixtures_h
+#define rubberdyn_tests_model_model_fixtures_h
+
+#include <deal.II/base/numbers.h>
+
+#include <rubberdyn/io/gmsh_mesh.h>
+#include <rubberdyn/materials/elastic.h>
+#include <rubberdyn/materials/yeoh.h>
+#include <rubberdyn/model/model.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace fixtures
+{
+  using namespace dealii;
+  using namespace rubberdyn;
+
+  /** parameter_files/meshes/ of the source tree. */
+  inline std::string
+  mesh_directory()
+  {
+    return std::string(SOURCE_DIR) + "/../../parameter_files/meshes/";
+  }
+
+  /**
+   * The rubber of the shipped examples: Yeoh, C10 = 0.00055, C20 =
+   * -0.00005, C30 = 0.000015 GPa, Poisson's ratio 0.499 (K = 2 G (1 + nu) /
+   * (3 (1 - 2 nu)), G = 2 C10, d1 = 2 / K), density 1.1e-6 kg/mm^3.
+   */
+  inline std::unique_ptr<materials::MaterialModel<3>>
+  rubber_law()
+  {
+    const double C10 = 0.00055, nu = 0.499, G = 2. * C10;
+    const double K = 2. * G * (1. + nu) / (3. * (1. - 2. * nu));
+    return std::make_unique<materials::Yeoh<3>>(C10,
+                                                -0.00005,
+                                                0.000015,
+                                                std::array<double, 3>{
+                                                  {2. / K, 0., 0.}},
+                                                1.1e-6);
+  }
+
+  /**
+   * parameter_files/bonded_block.prm: meshes/bonded_block.msh (rubber,
+   * volume 1, bonded to a steel plate, volume 2, on top), parts `rubber`
+   * (Yeoh) and `steel` (Elastic, E = 210 GPa, nu = 0.3, 7.85e-6 kg/mm^3),
+   * F-bar; `base` (surface 1) fixed, `press` (surface 2) pushed down in z by
+   * d (t / T - sin(2 pi t / T) / (2 pi)), d = 1 mm, T = 2 ms, then held.
+   * Ends with model.setup().
+   */
+  inline void
+  make_bonded_block(model::Model &model)
+  {
+    io::read_gmsh_mesh(model.triangulation,
+                       mesh_directory() + "bonded_block.msh",
+                       "Mesh/Mesh file");
+    model::Part rubber, steel;
+    rubber.name         = "rubber";
+    rubber.material_ids = {1};
+    rubber.law          = rubber_law();
+    steel.name          = "steel";
+    steel.material_ids  = {2};
+    steel.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
+    model.parts.push_back(std::move(rubber));
+    model.parts.push_back(std::move(steel));
+    model::BoundaryCondition base, press;
+    base.name          = "base";
+    base.boundary_ids  = {1};
+    press.name         = "press";
+    press.boundary_ids = {2};
+    press.type         = model::BoundaryCondition::Type::displacement;
+    press.components   = {2};
+    const double d = 1., T = 2.;
+    press.functions.push_back([=](const Point<3> &, const double t) {
+      return t < T ? -d * (t / T - std::sin(2. * numbers::PI * t / T) /
+                                     (2. * numbers::PI)) :
+                     -d;
+    });
+    model.boundary_conditions.push_back(base);
+    model.boundary_conditions.push_back(press);
+    model.setup();
+  }
+} // namespace fixtures
+
+#endif
