@@ -12,10 +12,13 @@
 #include <rubberdyn/time_integration/explicit_solver.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -33,6 +36,28 @@ namespace rubberdyn
       {};
 
       constexpr char rank_file_magic[8] = "RDYNRK1";
+
+      /**
+       * The time (ms) at which every rank kills itself with SIGKILL, read
+       * from the environment variable RUBBERDYN_SIMULATE_CRASH_AT, or +inf.
+       * A testing aid (doc/restarts.md): a machine that dies at a known
+       * moment, between checkpoints, with rows still in the stream buffers,
+       * without the race of killing the run from outside.
+       */
+      double
+      simulated_crash_time()
+      {
+        const char *value = std::getenv("RUBBERDYN_SIMULATE_CRASH_AT");
+        if (value == nullptr || *value == '\0')
+          return std::numeric_limits<double>::infinity();
+        char        *end  = nullptr;
+        const double time = std::strtod(value, &end);
+        AssertThrow(end != value && *end == '\0' && time >= 0.,
+                    ExcMessage("RUBBERDYN_SIMULATE_CRASH_AT must be a time in "
+                               "ms, not '" +
+                               std::string(value) + "'"));
+        return time;
+      }
 
       /**
        * If any rank has a non-empty @p message, throw an InputError with
@@ -456,8 +481,11 @@ namespace rubberdyn
           log << row;
         last_row_time = s.time();
       };
-      const auto monitor = [&]() {
+      const double crash_time = simulated_crash_time();
+      const auto   monitor    = [&]() {
         const double t = s.time();
+        if (t >= crash_time)
+          std::raise(SIGKILL);
         max_energy_error =
           std::max(max_energy_error, s.energies().absolute_error());
         if (t >= next_history * (1. - 1e-12))
