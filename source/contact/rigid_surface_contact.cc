@@ -154,13 +154,15 @@ namespace rubberdyn
 
     void
     RigidSurfaceContact::add_forces(
-      const VectorType &               u,
-      const std::vector<Tensor<1, 3>> &surface_displacement,
-      VectorType &                     f,
-      ContactResult &                  result)
+      const VectorType &              u,
+      const std::vector<SurfacePose> &pose,
+      VectorType &                    f,
+      ContactResult &                 result)
     {
       const unsigned int n_surfaces = surfaces.size();
+      AssertDimension(pose.size(), n_surfaces);
       result.force_on_plane.assign(n_surfaces, Tensor<1, 3>());
+      result.moment_on_plane.assign(n_surfaces, Tensor<1, 3>());
       result.penalty_energy       = 0.;
       result.friction_dissipation = 0.;
       n_touched.resize(nodes.size());
@@ -174,8 +176,15 @@ namespace rubberdyn
           for (unsigned int s = 0; s < n_surfaces; ++s)
             {
               const RigidSurface &surface = surfaces[s];
-              // Position relative to the surface's translation.
-              const Point<3> x_relative = x - surface_displacement[s];
+              // Position in the surface's reference frame: relative to its
+              // translation, and rotated back for a rotating body (the
+              // friction state is kept in that frame, so it turns with
+              // the body).
+              const SurfacePose &p          = pose[s];
+              const Point<3>     x_relative =
+                p.rotated ? p.centre + transpose(p.rotation) *
+                                         (x - p.centre - p.displacement) :
+                            x - p.displacement;
               double       gap;
               Tensor<1, 3> normal;
               gap_and_normal(surface, x_relative, gap, normal);
@@ -232,11 +241,15 @@ namespace rubberdyn
                   force += tangential_force;
                 }
               for (unsigned int d = 0; d < 3; ++d)
-                {
-                  state[d] = tangential_force[d];
-                  f.local_element(node.dofs[d]) += force[d];
-                }
+                state[d] = tangential_force[d];
+              // Back to the spatial frame.
+              if (p.rotated)
+                force = p.rotation * force;
+              for (unsigned int d = 0; d < 3; ++d)
+                f.local_element(node.dofs[d]) += force[d];
               result.force_on_plane[s] -= force;
+              result.moment_on_plane[s] -=
+                cross_product_3d(x - p.centre - p.displacement, force);
             }
         }
     }

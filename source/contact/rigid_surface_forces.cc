@@ -12,7 +12,7 @@ namespace rubberdyn
       const std::vector<unsigned int> &body_of_surface)
       : contact(contact)
       , body_of_surface(body_of_surface)
-      , surface_displacement(body_of_surface.size())
+      , pose(body_of_surface.size())
     {}
 
 
@@ -41,16 +41,22 @@ namespace rubberdyn
       for (unsigned int s = 0; s < body_of_surface.size(); ++s)
         {
           AssertIndexRange(body_of_surface[s], point.bodies.size());
-          surface_displacement[s] =
-            point.bodies[body_of_surface[s]].displacement;
+          const model::RigidBody &body = point.bodies[body_of_surface[s]];
+          pose[s].displacement          = body.displacement;
+          pose[s].rotation              = body.rotation;
+          pose[s].centre                = body.reference_position;
+          pose[s].rotated               = body.rotates();
         }
-      contact.add_forces(point.displacement, surface_displacement, f,
-                         contact_result);
+      contact.add_forces(point.displacement, pose, f, contact_result);
       results.contact_energy += contact_result.penalty_energy;
       results.friction_dissipation += contact_result.friction_dissipation;
       for (unsigned int s = 0; s < body_of_surface.size(); ++s)
-        results.force_on_body[body_of_surface[s]] +=
-          contact_result.force_on_plane[s];
+        {
+          results.force_on_body[body_of_surface[s]] +=
+            contact_result.force_on_plane[s];
+          results.moment_on_body[body_of_surface[s]] +=
+            contact_result.moment_on_plane[s];
+        }
       results.contact_time_step =
         std::min(results.contact_time_step,
                  contact.stable_time_step(point.mass));

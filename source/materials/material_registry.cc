@@ -88,16 +88,25 @@ namespace rubberdyn
 
 
       void
-      declare_part_parameters(ParameterHandler &prm,
-                              const PartDefaults &defaults)
+      declare_part_parameters(
+        ParameterHandler &  prm,
+        const PartDefaults &defaults,
+        const std::vector<std::pair<std::string, std::string>>
+          &additional_models)
       {
         std::ostringstream doc;
         doc << "Constitutive law of this part. One of:";
         for (const auto &entry : entries())
           doc << "\n'" << entry.first << "': " << entry.second.description;
+        std::string pattern = pattern_string();
+        for (const auto &model : additional_models)
+          {
+            doc << "\n'" << model.first << "': " << model.second;
+            pattern += "|" + model.first;
+          }
         prm.declare_entry("Model",
                           defaults.model,
-                          Patterns::Selection(pattern_string()),
+                          Patterns::Selection(pattern),
                           doc.str());
         prm.declare_entry("Density",
                           parameter_tools::format_number(defaults.density),

@@ -12,6 +12,7 @@
 #include <rubberdyn/time_integration/explicit_solver.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -106,6 +107,163 @@ namespace rubberdyn
       constexpr const char *component_names[3] = {"x", "y", "z"};
 
       /**
+       * The lumped mass of the rigid parts' cells (their elements compute
+       * nothing, so they give no mass of their own): the row sums
+       * rho N_a of part_masses().
+       */
+      class RigidPartMass : public ForceContribution
+      {
+      public:
+        explicit RigidPartMass(VectorType lumped_mass)
+          : lumped_mass(std::move(lumped_mass))
+        {}
+
+        std::string
+        name() const override
+        {
+          return "rigid-part mass";
+        }
+
+        Accumulation
+        accumulation() const override
+        {
+          return Accumulation::external_owned;
+        }
+
+        /** A rigid part's forces are its body's (ExplicitSolver). */
+        void
+        add_forces(const EvaluationPoint &,
+                   VectorType &,
+                   ContributionResults &) override
+        {}
+
+        void
+        add_lumped_mass(VectorType &mass,
+                        VectorType &physical_mass) const override
+        {
+          // Owned entries (the ghosts are added by the owner, and the
+          // solver compresses with add).
+          for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
+            {
+              mass.local_element(i) += lumped_mass.local_element(i);
+              physical_mass.local_element(i) += lumped_mass.local_element(i);
+            }
+        }
+
+      private:
+        VectorType lumped_mass;
+      };
+
+      /**
+       * The owned nodes of part @p p (its cells' vertices whose dofs this
+       * rank owns), with their reference positions.
+       */
+      time_integration::RigidPartNodes
+      owned_nodes_of_part(const Model &model, const unsigned int p)
+      {
+        time_integration::RigidPartNodes nodes;
+        std::set<unsigned int>           seen;
+        const unsigned int n_dofs = model.fe.n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_dofs);
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if ((cell->is_locally_owned() || cell->is_ghost()) &&
+              model.part_of_material_id(cell->material_id()) == p)
+            {
+              cell->get_dof_indices(dofs);
+              for (const unsigned int vertex : cell->vertex_indices())
+                {
+                  std::array<unsigned int, 3> local;
+                  bool                        owned = true;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const types::global_dof_index dof =
+                        dofs[model.fe.component_to_system_index(d, vertex)];
+                      owned = owned && model.partitioner->in_local_range(dof);
+                      if (owned)
+                        local[d] = model.partitioner->global_to_local(dof);
+                    }
+                  if (owned && seen.insert(local[0]).second)
+                    {
+                      nodes.dofs.push_back(local);
+                      nodes.X.push_back(cell->vertex(vertex));
+                    }
+                }
+            }
+        return nodes;
+      }
+
+      /**
+       * Mass, centre and inertia of rigid part @p p on @p body: the mass
+       * its nodes carry in the solver (@p nodal_mass: its cells' lumped
+       * mass, @p part_mass, and what deformable neighbours add to shared
+       * nodes); the centre of that nodal mass (so that gravity has no
+       * moment about it); the inertia of its cells by Gauss quadrature (a
+       * lumped inertia of a coarse mesh is far off: +50 % for two
+       * elements across) plus the neighbours' share as point masses.
+       */
+      void
+      set_rigid_part_inertia(const Model &                           model,
+                             const unsigned int                      p,
+                             const time_integration::RigidPartNodes &nodes,
+                             const VectorType &                      nodal_mass,
+                             const VectorType &                      part_mass,
+                             RigidBody &                             body)
+      {
+        double sums[4] = {0., 0., 0., 0.};
+        for (unsigned int n = 0; n < nodes.dofs.size(); ++n)
+          {
+            const double m = nodal_mass.local_element(nodes.dofs[n][0]);
+            sums[0] += m;
+            for (unsigned int d = 0; d < 3; ++d)
+              sums[1 + d] += m * nodes.X[n][d];
+          }
+        Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+                            model.comm,
+                            ArrayView<double>(sums, 4));
+        body.mass = sums[0];
+        for (unsigned int d = 0; d < 3; ++d)
+          body.reference_position[d] = sums[1 + d] / sums[0];
+        const Point<3> &c = body.reference_position;
+        const auto point_inertia = [](const Tensor<1, 3> &r, const double m) {
+          Tensor<2, 3> J;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              J[i][j] = m * ((i == j ? r.norm_square() : 0.) - r[i] * r[j]);
+          return J;
+        };
+        Tensor<2, 3> inertia;
+        for (unsigned int n = 0; n < nodes.dofs.size(); ++n)
+          {
+            const unsigned int i = nodes.dofs[n][0];
+            inertia += point_inertia(nodes.X[n] - c,
+                                     nodal_mass.local_element(i) -
+                                       part_mass.local_element(i));
+          }
+        FEValues<3> fe_values(model.fe, QGauss<3>(2),
+                              update_quadrature_points | update_JxW_values);
+        const double density = model.parts[p].law->density();
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              model.part_of_material_id(cell->material_id()) == p)
+            {
+              fe_values.reinit(cell);
+              for (const unsigned int q : fe_values.quadrature_point_indices())
+                inertia += point_inertia(fe_values.quadrature_point(q) - c,
+                                         density * fe_values.JxW(q));
+            }
+        double values[9];
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            values[3 * i + j] = inertia[i][j];
+        Utilities::MPI::sum(ArrayView<const double>(values, 9),
+                            model.comm,
+                            ArrayView<double>(values, 9));
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            body.inertia[i][j] = values[3 * i + j];
+      }
+
+      /**
        * The reaction columns of every boundary condition
        * (postprocess::BoundaryReactionColumns: six per condition, force
        * then moment) with, in those of a pressure or traction condition,
@@ -183,8 +341,12 @@ namespace rubberdyn
 
       // Elements: one group per part (its law and formulation).
       std::vector<elements::ElementGroup> groups;
+      // A rigid part's group has no cells: no element forces, no step.
       for (const Part &part : model.parts)
-        groups.push_back({part.material_ids, part.law.get(), part.formulation});
+        groups.push_back({part.rigid ? std::set<types::material_id>() :
+                                       part.material_ids,
+                          part.law.get(),
+                          part.formulation});
       elements::ElementSettings element_settings;
       element_settings.bulk_viscosity_linear =
         time_integration.bulk_viscosity_linear;
@@ -233,9 +395,59 @@ namespace rubberdyn
           }
       std::vector<model::ForceContribution *> contributions = {
         element_forces.get()};
-      for (unsigned int s = 0; s < model.rigid_surfaces.size(); ++s)
+      const std::vector<VectorType> mass_of_part = part_masses(model);
+      {
+        VectorType rigid_mass(model.partitioner);
+        bool       any_rigid = false;
+        for (unsigned int p = 0; p < model.parts.size(); ++p)
+          if (model.parts[p].rigid)
+            {
+              rigid_mass += mass_of_part[p];
+              any_rigid = true;
+            }
+        if (any_rigid)
+          {
+            rigid_part_mass = std::make_unique<RigidPartMass>(rigid_mass);
+            contributions.push_back(rigid_part_mass.get());
+          }
+      }
+
+      // The bodies: those of the rigid surfaces that have their own, in
+      // their order, then those of the rigid parts.
+      for (const RigidSurfaceDefinition &definition : model.rigid_surfaces)
+        if (definition.rigid_part.empty())
+          bodies.push_back(definition.body);
+      body_of_part.assign(model.parts.size(), numbers::invalid_unsigned_int);
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].rigid)
+          {
+            const Part &part = model.parts[p];
+            body_of_part[p]  = bodies.size();
+            RigidBody body;
+            body.name = part.name;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                body.free[d]          = part.rigid_free_translation[d];
+                body.free_rotation[d] = part.rigid_free_rotation[d];
+                body.velocity[d] =
+                  body.free[d] ? part.initial_velocity[d] : 0.;
+                body.angular_velocity[d] =
+                  body.free_rotation[d] ? part.initial_angular_velocity[d] :
+                                          0.;
+              }
+            // Mass, centre and inertia once the nodal masses are known.
+            body.mass = 1.;
+            bodies.push_back(body);
+          }
+
+      // One contact per rigid surface, each surface carried by its body.
+      for (unsigned int s = 0, own = 0; s < model.rigid_surfaces.size(); ++s)
         {
           const RigidSurfaceDefinition &definition = model.rigid_surfaces[s];
+          const unsigned int            body =
+            definition.rigid_part.empty() ?
+                         own++ :
+                         body_of_part[model.part_index(definition.rigid_part)];
           contacts.push_back(std::make_unique<contact::RigidSurfaceContact>());
           contacts.back()->initialize(model.dof_handler,
                                       model.partitioner,
@@ -244,10 +456,9 @@ namespace rubberdyn
                                       definition.penalty_scale,
                                       {definition.surface});
           contact_forces.push_back(
-            std::make_unique<contact::RigidSurfaceForces>(*contacts.back(),
-                                                          std::vector<unsigned int>{s}));
+            std::make_unique<contact::RigidSurfaceForces>(
+              *contacts.back(), std::vector<unsigned int>{body}));
           contributions.push_back(contact_forces.back().get());
-          bodies.push_back(definition.body);
         }
 
       // Boundary conditions: one constraint group per component.
@@ -328,7 +539,7 @@ namespace rubberdyn
         model.dof_handler, contributions, bodies, constraints.get(),
         model.partitioner, settings, comm);
       if (model.parts.size() > 1)
-        explicit_solver->set_group_masses(part_masses(model));
+        explicit_solver->set_group_masses(mass_of_part);
 
       // Initial velocities of the parts (a node shared by two parts takes
       // the velocity of the later one).
@@ -350,6 +561,53 @@ namespace rubberdyn
             }
       }
       explicit_solver->set_initial_velocity(initial_velocity);
+
+      // Rigid parts: their nodes follow their bodies. A boundary condition
+      // on them would fight the body: refused, naming both.
+      std::vector<time_integration::RigidPartNodes> rigid_nodes;
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].rigid)
+          {
+            time_integration::RigidPartNodes nodes =
+              owned_nodes_of_part(model, p);
+            nodes.body  = body_of_part[p];
+            nodes.group = p;
+            set_rigid_part_inertia(model, p, nodes,
+                                   explicit_solver->lumped_mass(),
+                                   mass_of_part[p], bodies[body_of_part[p]]);
+            rigid_nodes.push_back(std::move(nodes));
+          }
+      if (!rigid_nodes.empty())
+        {
+          std::string message;
+          std::vector<int> part_of_dof(model.partitioner->locally_owned_size(),
+                                       -1);
+          for (const auto &nodes : rigid_nodes)
+            for (const auto &node : nodes.dofs)
+              for (const unsigned int i : node)
+                part_of_dof[i] = nodes.group;
+          for (const KinematicConstraints::Entry &entry :
+               constraints->entries())
+            if (part_of_dof[entry.dof] >= 0 && message.empty())
+              message =
+                "Boundary conditions/" +
+                model.boundary_conditions[condition_of_group[entry.group]]
+                  .name +
+                "/Boundary ids: a node of the rigid part '" +
+                model.parts[part_of_dof[entry.dof]].name +
+                "' is in this condition; a rigid part moves as its Rigid "
+                "motion says (fixed, or free directions), not by boundary "
+                "conditions";
+          const std::vector<std::string> messages =
+            Utilities::MPI::all_gather(comm, message);
+          for (const std::string &m : messages)
+            if (!m.empty())
+              {
+                const auto colon = m.find(": ");
+                throw InputError(m.substr(0, colon), m.substr(colon + 2));
+              }
+          explicit_solver->set_rigid_parts(rigid_nodes);
+        }
     }
 
 
@@ -382,10 +640,17 @@ namespace rubberdyn
       for (const Part &part : model.parts)
         names.push_back(part.name);
       add_postprocessor(std::make_unique<postprocess::PartColumns>(names));
+      // The bodies in their order: rigid surfaces with their own body, then
+      // the rigid parts (with their rotation).
       names.clear();
-      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
-        names.push_back(surface.name);
-      add_postprocessor(std::make_unique<postprocess::RigidBodyColumns>(names));
+      std::vector<bool> rotating;
+      for (const RigidBody &body : bodies)
+        {
+          names.push_back(body.name);
+          rotating.push_back(body.carries_nodes);
+        }
+      add_postprocessor(
+        std::make_unique<postprocess::RigidBodyColumns>(names, rotating));
     }
 
 

@@ -19,6 +19,7 @@ namespace rubberdyn
       element_time_step    = std::numeric_limits<double>::max();
       contact_time_step    = std::numeric_limits<double>::max();
       force_on_body.assign(n_bodies, Tensor<1, 3>());
+      moment_on_body.assign(n_bodies, Tensor<1, 3>());
       failure = EvaluationFailure();
     }
   } // namespace model

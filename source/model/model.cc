@@ -6,6 +6,8 @@
 
 #include <map>
 
+#include <stdexcept>
+
 namespace rubberdyn
 {
   namespace model
@@ -16,6 +18,18 @@ namespace rubberdyn
       , fe(FE_Q<3>(1), 3)
       , dof_handler(triangulation)
     {}
+
+
+
+    unsigned int
+    Model::part_index(const std::string &name) const
+    {
+      for (unsigned int p = 0; p < parts.size(); ++p)
+        if (parts[p].name == name)
+          return p;
+      throw std::invalid_argument("the model has no part named '" + name +
+                                  "'");
+    }
 
 
 

@@ -176,9 +176,13 @@ namespace rubberdyn
 
 
     RigidBodyColumns::RigidBodyColumns(
-      const std::vector<std::string> &body_names)
+      const std::vector<std::string> &body_names,
+      const std::vector<bool> &       rotating)
       : body_names(body_names)
-    {}
+      , rotating(rotating)
+    {
+      this->rotating.resize(body_names.size(), false);
+    }
 
 
 
@@ -194,11 +198,18 @@ namespace rubberdyn
     RigidBodyColumns::history_columns() const
     {
       std::vector<std::string> columns;
-      for (const std::string &body : body_names)
+      for (unsigned int b = 0; b < body_names.size(); ++b)
         {
+          const std::string &body = body_names[b];
           add_vector_columns(body + "_position", columns);
           add_vector_columns(body + "_velocity", columns);
           add_vector_columns(body + "_force", columns);
+          if (rotating[b])
+            {
+              add_vector_columns(body + "_rotation", columns);
+              add_vector_columns(body + "_angular_velocity", columns);
+              add_vector_columns(body + "_moment", columns);
+            }
         }
       return columns;
     }
@@ -216,6 +227,12 @@ namespace rubberdyn
                             values);
           add_vector_values(body.velocity, values);
           add_vector_values(body.contact_force, values);
+          if (rotating[b])
+            {
+              add_vector_values(model::rotation_vector(body.rotation), values);
+              add_vector_values(body.angular_velocity, values);
+              add_vector_values(body.contact_moment, values);
+            }
         }
     }
   } // namespace postprocess

@@ -6,11 +6,13 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/io/gmsh_mesh.h>
+#include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/studies/model_study.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -292,8 +294,28 @@ namespace rubberdyn
                             Patterns::Anything(),
                             "Velocity of the part's nodes at t = 0 (mm/ms), "
                             "x, y, z.");
-          materials::registry::declare_part_parameters(prm,
-                                                       {"Yeoh", 1.1e-6, 0.499});
+          materials::registry::declare_part_parameters(
+            prm,
+            {"Yeoh", 1.1e-6, 0.499},
+            {{"Rigid",
+              "a rigid part (LS-DYNA's MAT_RIGID): its nodes move with one "
+              "rigid body whose mass, centre of mass and inertia come from "
+              "its cells and Density; Young's modulus and Poisson's ratio "
+              "only set the stiffness of its contact; see Rigid motion. "
+              "Its cells compute no stresses and do not limit the time "
+              "step."}});
+          prm.declare_entry(
+            "Rigid motion", "free", Patterns::Anything(),
+            "For Model = Rigid: 'free' (moves and turns under the forces "
+            "on it and gravity), 'fixed' (held in place), or the list of "
+            "its free directions from x, y, z (translations) and rx, ry, rz "
+            "(rotations about axes through its centre of mass parallel to "
+            "x, y, z), separated by commas; the others are held. Its "
+            "Initial velocity (mm/ms) applies in its free translations.");
+          prm.declare_entry(
+            "Initial angular velocity", "0, 0, 0", Patterns::Anything(),
+            "For Model = Rigid: angular velocity at t = 0 (rad/ms) about "
+            "its centre of mass, x, y, z, in its free rotations.");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -410,6 +432,14 @@ namespace rubberdyn
                             "Scale of the penalty stiffness s K A^2 / V "
                             "(-), or 'inherit' for Contact/Penalty scale "
                             "factor.");
+          prm.declare_entry(
+            "Rigid part", "", Patterns::Anything(),
+            "Name of a part with Model = Rigid that carries this surface: "
+            "its Point and Direction are given at t = 0 and move and turn "
+            "with the part, and its contact forces act on the part. Mass, "
+            "Free directions, Initial velocity and Velocity function must "
+            "then stay at their defaults (the part's own apply). Empty: the "
+            "surface has a body of its own.");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -503,7 +533,58 @@ namespace rubberdyn
                                elements::Formulation::displacement;
           part.initial_velocity =
             parse_vector(prm.get("Initial velocity"), path + "/Initial velocity");
-          part.law = materials::registry::create<3>(prm, path);
+          const std::string rigid_motion =
+            Utilities::trim(prm.get("Rigid motion"));
+          if (prm.get("Model") == "Rigid")
+            {
+              // Density and the contact stiffness, with their checks.
+              part.rigid = true;
+              part.law   = std::make_unique<materials::Elastic<3>>(prm, path);
+              part.initial_angular_velocity =
+                parse_vector(prm.get("Initial angular velocity"),
+                             path + "/Initial angular velocity");
+              materials::check_derived_constants(*part.law, path);
+              if (rigid_motion == "fixed")
+                for (unsigned int d = 0; d < 3; ++d)
+                  part.rigid_free_translation[d] =
+                    part.rigid_free_rotation[d] = false;
+              else if (rigid_motion != "free")
+                {
+                  for (unsigned int d = 0; d < 3; ++d)
+                    part.rigid_free_translation[d] =
+                      part.rigid_free_rotation[d] = false;
+                  for (const std::string &item :
+                       Utilities::split_string_list(rigid_motion))
+                    {
+                      const std::string names[6] = {"x", "y", "z",
+                                                    "rx", "ry", "rz"};
+                      const auto found =
+                        std::find(std::begin(names), std::end(names), item);
+                      if (found == std::end(names))
+                        throw InputError(
+                          path + "/Rigid motion",
+                          "'" + item.substr(0, 40) +
+                            "' is none of free, fixed or a list of x, y, z, "
+                            "rx, ry, rz");
+                      const unsigned int k = found - std::begin(names);
+                      (k < 3 ? part.rigid_free_translation[k] :
+                               part.rigid_free_rotation[k - 3]) = true;
+                    }
+                }
+            }
+          else
+            {
+              if (Utilities::trim(prm.get("Initial angular velocity")) !=
+                  "0, 0, 0")
+                throw InputError(path + "/Initial angular velocity",
+                                 "is for Model = Rigid only");
+              if (rigid_motion != "free")
+                throw InputError(path + "/Rigid motion",
+                                 "is for Model = Rigid only; this part's "
+                                 "Model is " +
+                                   prm.get("Model"));
+              part.law = materials::registry::create<3>(prm, path);
+            }
           prm.leave_subsection();
           m.parts.push_back(std::move(part));
         }
@@ -622,6 +703,45 @@ namespace rubberdyn
                 }
               require_positive(definition.penalty_scale,
                                path + "/Penalty scale factor");
+            }
+
+          definition.rigid_part = Utilities::trim(prm.get("Rigid part"));
+          if (!definition.rigid_part.empty())
+            {
+              bool found = false;
+              for (const model::Part &part : m.parts)
+                if (part.name == definition.rigid_part)
+                  {
+                    if (!part.rigid)
+                      throw InputError(path + "/Rigid part",
+                                       "the part '" + part.name +
+                                         "' is not rigid (Model = Rigid)");
+                    found = true;
+                  }
+              if (!found)
+                throw InputError(path + "/Rigid part",
+                                 "names no part ('" +
+                                   definition.rigid_part.substr(0, 40) +
+                                   "' is not in Parts/Names)");
+              for (const std::string entry : {"Mass", "Free directions",
+                                              "Initial velocity",
+                                              "Velocity function"})
+                {
+                  const std::string value = Utilities::trim(prm.get(entry));
+                  const std::string defaults[4] = {"0", "", "0, 0, 0",
+                                                   "0; 0; 0"};
+                  const std::string names[4]    = {"Mass", "Free directions",
+                                                "Initial velocity",
+                                                "Velocity function"};
+                  for (unsigned int k = 0; k < 4; ++k)
+                    if (names[k] == entry && value != defaults[k])
+                      throw InputError(path + "/" + entry,
+                                       "must stay at its default when the "
+                                       "surface is carried by the rigid "
+                                       "part '" +
+                                         definition.rigid_part +
+                                         "' (the part's motion applies)");
+                }
             }
 
           model::RigidBody &body  = definition.body;

@@ -1,6 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -94,6 +96,7 @@ namespace rubberdyn
                 }
           }
       dof_group.assign(n_owned, 0);
+      rigid_dof.assign(n_owned, false);
 
       // Lumped mass with and without mass scaling; gravity acts on the
       // physical mass only (added mass is a numerical device, not weight).
@@ -197,10 +200,127 @@ namespace rubberdyn
 
 
 
+    void
+    ExplicitSolver::set_rigid_parts(const std::vector<RigidPartNodes> &parts)
+    {
+      AssertThrow(!started, ExcMessage("rigid parts after the start"));
+      rigid_parts = parts;
+      std::vector<double> weights(3 * bodies.size(), 0.);
+      for (const RigidPartNodes &part : rigid_parts)
+        {
+          AssertIndexRange(part.body, bodies.size());
+          AssertThrow(bodies[part.body].mass > 0.,
+                      ExcMessage("a rigid part's body needs a mass"));
+          for (const std::array<unsigned int, 3> &node : part.dofs)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                rigid_dof[node[d]] = true;
+                weights[3 * part.body + d] +=
+                  gravity_force.local_element(node[d]);
+              }
+        }
+      Utilities::MPI::sum(ArrayView<const double>(weights),
+                          comm,
+                          ArrayView<double>(weights));
+      for (const RigidPartNodes &part : rigid_parts)
+        {
+          RigidBody &body    = bodies[part.body];
+          body.carries_nodes = true;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              body.weight[d] = weights[3 * part.body + d];
+              if (!body.moves_freely(d))
+                body.velocity[d] = 0.;
+            }
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!body.rotates() || !body.free_rotation[d])
+              body.angular_velocity[d] = 0.;
+          body.angular_momentum = body.inertia * body.angular_velocity;
+          for (unsigned int n = 0; n < part.dofs.size(); ++n)
+            {
+              const Tensor<1, 3> velocity =
+                body.velocity +
+                cross_product_3d(body.angular_velocity,
+                                 part.X[n] - body.reference_position);
+              for (unsigned int d = 0; d < 3; ++d)
+                v.local_element(part.dofs[n][d]) = velocity[d];
+            }
+        }
+      v.update_ghost_values();
+    }
+
+
+
+    void
+    ExplicitSolver::set_rigid_node_velocities(const double step)
+    {
+      for (const RigidPartNodes &part : rigid_parts)
+        {
+          const RigidBody &body = bodies[part.body];
+          // The pose at t_{n+1}: x = C + u + R (X - C).
+          const Point<3> centre =
+            body.current_reference_position() + step * body.velocity;
+          const Tensor<2, 3> rotation =
+            body.rotates() ?
+              model::rotation_of_vector(step * body.angular_velocity) *
+                body.rotation :
+              body.rotation;
+          for (unsigned int n = 0; n < part.dofs.size(); ++n)
+            {
+              const Point<3> x_next =
+                centre + rotation * (part.X[n] - body.reference_position);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const unsigned int i = part.dofs[n][d];
+                  v.local_element(i) =
+                    (x_next[d] - part.X[n][d] - u.local_element(i)) / step;
+                }
+            }
+        }
+    }
+
+
+
     namespace
     {
-      constexpr char         checkpoint_magic[8] = "RDYNCK2";
-      constexpr unsigned int checkpoint_version  = 2;
+      constexpr char         checkpoint_magic[8] = "RDYNCK3";
+      constexpr unsigned int checkpoint_version  = 3;
+      /** Values per rigid body in a checkpoint. */
+      constexpr unsigned int n_body_values = 27;
+
+      /** A body's state as n_body_values numbers. */
+      void
+      body_values(const RigidBody &body, double *values)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            values[d]      = body.displacement[d];
+            values[3 + d]  = body.velocity[d];
+            values[6 + d]  = body.contact_force[d];
+            values[9 + d]  = body.angular_velocity[d];
+            values[12 + d] = body.contact_moment[d];
+            values[24 + d] = body.angular_momentum[d];
+            for (unsigned int e = 0; e < 3; ++e)
+              values[15 + 3 * d + e] = body.rotation[d][e];
+          }
+      }
+
+      /** The inverse of body_values(). */
+      void
+      set_body_values(const double *values, RigidBody &body)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            body.displacement[d]     = values[d];
+            body.velocity[d]         = values[3 + d];
+            body.contact_force[d]    = values[6 + d];
+            body.angular_velocity[d] = values[9 + d];
+            body.contact_moment[d]   = values[12 + d];
+            body.angular_momentum[d] = values[24 + d];
+            for (unsigned int e = 0; e < 3; ++e)
+              body.rotation[d][e] = values[15 + 3 * d + e];
+          }
+      }
       constexpr unsigned int n_scalars           = 15;
     } // namespace
 
@@ -235,14 +355,9 @@ namespace rubberdyn
       write_doubles(out, v.begin(), n_owned);
       for (const RigidBody &body : bodies)
         {
-          double values[9];
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              values[d]     = body.displacement[d];
-              values[3 + d] = body.velocity[d];
-              values[6 + d] = body.contact_force[d];
-            }
-          write_doubles(out, values, 9);
+          double values[n_body_values];
+          body_values(body, values);
+          write_doubles(out, values, n_body_values);
         }
       write_doubles(out, reaction.data(), reaction.size());
       std::vector<double> moments;
@@ -317,14 +432,9 @@ namespace rubberdyn
           read_doubles(in, v.begin(), n_owned, "velocities");
           for (RigidBody &body : bodies)
             {
-              double values[9];
-              read_doubles(in, values, 9, "rigid-body values");
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  body.displacement[d]  = values[d];
-                  body.velocity[d]      = values[3 + d];
-                  body.contact_force[d] = values[6 + d];
-                }
+              double values[n_body_values];
+              read_doubles(in, values, n_body_values, "rigid-body values");
+              set_body_values(values, body);
             }
           read_doubles(in, reaction.data(), reaction.size(), "reactions");
           std::vector<double> moments(3 * reaction_moment.size());
@@ -434,11 +544,14 @@ namespace rubberdyn
           // Initial energy: kinetic energy of the initial velocities.
           double local = 0.;
           for (unsigned int i = 0; i < n_owned; ++i)
-            local += 0.5 * mass.local_element(i) * v.local_element(i) *
-                     v.local_element(i);
+            if (!rigid_dof[i]) // a rigid part's energy is its body's
+              local += 0.5 * mass.local_element(i) * v.local_element(i) *
+                       v.local_element(i);
           energy.initial = Utilities::MPI::sum(local, comm);
           for (const RigidBody &body : bodies)
-            energy.initial += 0.5 * body.mass * body.velocity.norm_square();
+            energy.initial += 0.5 * body.mass * body.velocity.norm_square() +
+                              0.5 * body.angular_velocity *
+                                (body.inertia * body.angular_velocity);
         }
 
       // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
@@ -449,7 +562,7 @@ namespace rubberdyn
       // kinetic energy and momentum.
       constexpr unsigned int n_energy_sums = 10;
       const unsigned int     body_offset   = n_energy_sums;
-      const unsigned int     reaction_offset = body_offset + 3 * n_bodies;
+      const unsigned int     reaction_offset = body_offset + 6 * n_bodies;
       const unsigned int     moment_offset   = reaction_offset + n_cgroups;
       const unsigned int     group_offset    = moment_offset + 3 * n_cgroups;
       std::vector<double> sums(group_offset + 5 * n_groups);
@@ -520,6 +633,9 @@ namespace rubberdyn
               const double v_new =
                 v_old + average_step * inverse_mass.local_element(i) *
                           f.local_element(i);
+              v.local_element(i) = v_new;
+              if (rigid_dof[i]) // moves with its body, counted with it
+                continue;
               const double m = mass.local_element(i);
               const unsigned int g = dof_group[i];
               const double v_mean    = w_old * v_old + w_new * v_new;
@@ -527,7 +643,6 @@ namespace rubberdyn
               kinetic += kinetic_i;
               group_kinetic[g] += kinetic_i;
               group_momentum[3 * g + dof_component[i]] += m * v_mean;
-              v.local_element(i) = v_new;
             }
           // Prescribed velocities at t_{n+1/2}, their reactions and work
           // (the kinetic energy of the free update is corrected). Their
@@ -596,6 +711,8 @@ namespace rubberdyn
           for (unsigned int k = 0; k < shared_dofs.size(); ++k)
             {
               const unsigned int i     = shared_dofs[k].dof;
+              if (rigid_dof[i])
+                continue;
               const double       v_mid =
                 w_old * shared_velocity[k] + w_new * v.local_element(i);
               for (unsigned int g = 0; g < n_groups; ++g)
@@ -621,7 +738,35 @@ namespace rubberdyn
           sums[9] = 0.;
           for (unsigned int b = 0; b < n_bodies; ++b)
             for (unsigned int d = 0; d < 3; ++d)
-              sums[body_offset + 3 * b + d] = results.force_on_body[b][d];
+              {
+                sums[body_offset + 6 * b + d] = results.force_on_body[b][d];
+                sums[body_offset + 6 * b + 3 + d] =
+                  results.moment_on_body[b][d];
+              }
+          // The forces on the rigid parts' nodes (with their weight) and
+          // their moments about the bodies' current centres.
+          for (const RigidPartNodes &part : rigid_parts)
+            {
+              const RigidBody &body   = bodies[part.body];
+              const Point<3>   centre = body.current_reference_position();
+              double *const    sum    = &sums[body_offset + 6 * part.body];
+              for (unsigned int n = 0; n < part.dofs.size(); ++n)
+                {
+                  Tensor<1, 3> force, arm;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const unsigned int i = part.dofs[n][d];
+                      force[d] = f.local_element(i);
+                      arm[d]   = part.X[n][d] + u.local_element(i) - centre[d];
+                    }
+                  const Tensor<1, 3> moment = cross_product_3d(arm, force);
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      sum[d] += force[d];
+                      sum[3 + d] += moment[d];
+                    }
+                }
+            }
           for (unsigned int g = 0; g < 4 * n_cgroups; ++g)
             sums[reaction_offset + g] = local_reaction[g];
           for (unsigned int g = 0; g < n_groups; ++g)
@@ -666,24 +811,85 @@ namespace rubberdyn
             {
               RigidBody &body = bodies[b];
               for (unsigned int d = 0; d < 3; ++d)
-                body.contact_force[d] = sums[body_offset + 3 * b + d];
+                {
+                  body.contact_force[d]  = sums[body_offset + 6 * b + d];
+                  body.contact_moment[d] = sums[body_offset + 6 * b + 3 + d];
+                }
+              // A rigid part's sum holds its weight: the force of the rest
+              // of the model on it is the remainder.
+              if (body.carries_nodes)
+                body.contact_force -= body.weight;
               Tensor<1, 3> v_new = body.velocity;
               const Tensor<1, 3> prescribed =
                 body.prescribed_velocity ?
                   body.prescribed_velocity(half_step_time) :
                   Tensor<1, 3>();
               for (unsigned int d = 0; d < 3; ++d)
-                if (body.moves_freely(d))
+                if (!body.moves_freely(d))
+                  v_new[d] = prescribed[d];
+                else if (body.carries_nodes)
+                  v_new[d] += average_step *
+                              (body.contact_force[d] + body.weight[d]) /
+                              body.mass;
+                else
                   v_new[d] += average_step *
                               (body.contact_force[d] / body.mass +
                                settings.gravity[d]);
-                else
-                  v_new[d] = prescribed[d];
-              energy.kinetic += 0.5 * body.mass *
-                                (w_old * body.velocity + w_new * v_new)
-                                  .norm_square();
+              const Tensor<1, 3> v_mean =
+                w_old * body.velocity + w_new * v_new;
+              double body_kinetic = 0.5 * body.mass * v_mean.norm_square();
               body.velocity = v_new;
+              if (body.rotates())
+                {
+                  // Angular momentum about the centre, spatial frame:
+                  // L^{n+1/2} = L^{n-1/2} + Dt^n M^n (kept, not recomputed
+                  // from the turning inertia, so a torque-free body keeps
+                  // it exactly), then w^{n+1/2} from L with the inertia at
+                  // t_n, I = R I_0 R^T, in the free directions (held ones
+                  // stay 0; their L is what the constraint leaves).
+                  const Tensor<2, 3> inertia =
+                    body.rotation * body.inertia * transpose(body.rotation);
+                  const Tensor<1, 3> w_previous = body.angular_velocity;
+                  body.angular_momentum += average_step * body.contact_moment;
+                  std::vector<unsigned int> free;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    if (body.free_rotation[d])
+                      free.push_back(d);
+                  FullMatrix<double> block(free.size(), free.size());
+                  Vector<double>     right(free.size()), w_free(free.size());
+                  for (unsigned int r = 0; r < free.size(); ++r)
+                    {
+                      right(r) = body.angular_momentum[free[r]];
+                      for (unsigned int c = 0; c < free.size(); ++c)
+                        block(r, c) = inertia[free[r]][free[c]];
+                    }
+                  block.gauss_jordan();
+                  block.vmult(w_free, right);
+                  Tensor<1, 3> w_next;
+                  for (unsigned int r = 0; r < free.size(); ++r)
+                    w_next[free[r]] = w_free(r);
+                  // The held directions' momentum follows the motion.
+                  const Tensor<1, 3> L = inertia * w_next;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    if (!body.free_rotation[d])
+                      body.angular_momentum[d] = L[d];
+                  const Tensor<1, 3> w_mean =
+                    w_old * w_previous + w_new * w_next;
+                  body_kinetic += 0.5 * w_mean * (inertia * w_mean);
+                  body.angular_velocity = w_next;
+                }
+              energy.kinetic += body_kinetic;
+              if (body.carries_nodes)
+                for (const RigidPartNodes &part : rigid_parts)
+                  if (part.body == b)
+                    {
+                      group_motion[part.group].kinetic_energy += body_kinetic;
+                      group_motion[part.group].momentum +=
+                        body.mass * v_mean;
+                      break;
+                    }
             }
+          set_rigid_node_velocities(new_step);
 
           energy.largest_energy =
             std::max(energy.largest_energy, energy.current_scale());
@@ -697,16 +903,21 @@ namespace rubberdyn
           // Displacements to t_{n+1}. A body that is held or driven in a
           // direction does work on the solid there: minus the solid's
           // force on it times its displacement.
+          // (A rigid part's gravity work is its nodes', booked below.)
           for (RigidBody &body : bodies)
             {
               const Tensor<1, 3> increment = new_step * body.velocity;
               body.displacement += increment;
+              if (body.rotates())
+                body.rotation =
+                  model::rotation_of_vector(new_step * body.angular_velocity) *
+                  body.rotation;
               for (unsigned int d = 0; d < 3; ++d)
-                if (body.moves_freely(d))
+                if (!body.moves_freely(d))
+                  energy.external_work -= body.contact_force[d] * increment[d];
+                else if (!body.carries_nodes)
                   energy.external_work +=
                     body.mass * settings.gravity[d] * increment[d];
-                else
-                  energy.external_work -= body.contact_force[d] * increment[d];
             }
           gravity_work_increment = 0.;
           for (unsigned int i = 0; i < n_owned; ++i)

@@ -85,6 +85,56 @@ namespace fixtures
     model.boundary_conditions.push_back(press);
     model.setup();
   }
+
+  /**
+   * parameter_files/rigid_drop.prm: meshes/rigid_drop.msh (a rubber block
+   * 20 x 20 x 10 mm, volume 1, on the floor; a steel block 10 x 10 x 5 mm,
+   * volume 2, centred 5 mm above it), parts `rubber` (Yeoh, F-bar) and
+   * `block` (Model = Rigid: E = 210 GPa, nu = 0.3, 7.85e-6 kg/mm^3, free,
+   * with @p velocity and @p angular_velocity at t = 0); `floor` (surface 1)
+   * fixed; if @p with_sole, the rigid plane `sole` at the block's bottom
+   * (z = 15, normal -z) carried by the block, touching the rubber top
+   * (surface 2). Gravity @p gravity. Ends with model.setup().
+   */
+  inline void
+  make_rigid_drop(model::Model &      model,
+                  const Tensor<1, 3> &velocity,
+                  const Tensor<1, 3> &angular_velocity,
+                  const Tensor<1, 3> &gravity,
+                  const bool          with_sole)
+  {
+    io::read_gmsh_mesh(model.triangulation,
+                       mesh_directory() + "rigid_drop.msh",
+                       "Mesh/Mesh file");
+    model::Part rubber, block;
+    rubber.name         = "rubber";
+    rubber.material_ids = {1};
+    rubber.law          = rubber_law();
+    block.name          = "block";
+    block.material_ids  = {2};
+    block.rigid         = true;
+    block.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
+    block.initial_velocity         = velocity;
+    block.initial_angular_velocity = angular_velocity;
+    model.parts.push_back(std::move(rubber));
+    model.parts.push_back(std::move(block));
+    model::BoundaryCondition floor;
+    floor.name         = "floor";
+    floor.boundary_ids = {1};
+    model.boundary_conditions.push_back(floor);
+    if (with_sole)
+      {
+        model::RigidSurfaceDefinition sole;
+        sole.name                 = "sole";
+        sole.surface.point        = Point<3>(10., 10., 15.);
+        sole.surface.normal       = Tensor<1, 3>({0., 0., -1.});
+        sole.boundary_ids         = {2};
+        sole.rigid_part           = "block";
+        model.rigid_surfaces.push_back(sole);
+      }
+    model.gravity = gravity;
+    model.setup();
+  }
 } // namespace fixtures
 
 #endif

@@ -61,6 +61,24 @@ namespace rubberdyn
       Shape  shape = Shape::plane;
     };
 
+    /**
+     * Where a rigid surface is: its body's displacement, and, for a
+     * rotating body, its rotation about a centre. A point given in the
+     * reference configuration, X, is now at centre + displacement +
+     * rotation (X - centre).
+     */
+    struct SurfacePose
+    {
+      /** Displacement of the body (mm). */
+      Tensor<1, 3> displacement;
+      /** Rotation of the body (orthogonal; used if rotated). */
+      Tensor<2, 3> rotation;
+      /** The point the body rotates about, reference configuration (mm). */
+      Point<3> centre;
+      /** Whether the body has a rotation (false: a translation only). */
+      bool rotated = false;
+    };
+
     /** What contact did in one evaluation. */
     struct ContactResult
     {
@@ -69,6 +87,11 @@ namespace rubberdyn
        * contact forces applied to the solid's nodes.
        */
       std::vector<Tensor<1, 3>> force_on_plane;
+      /**
+       * Moment of those forces (kN mm) about each surface's current
+       * centre (SurfacePose: centre + displacement).
+       */
+      std::vector<Tensor<1, 3>> moment_on_plane;
       /**
        * Energy stored in the normal and tangential penalty springs (J = kN
        * mm).
@@ -124,15 +147,15 @@ namespace rubberdyn
 
       /**
        * Add the contact forces at displacement @p u (owned entries) with
-       * the surfaces displaced by @p surface_displacement into @p f (owned
+       * the surfaces at @p pose into @p f (owned
        * entries only), and advance the friction state to this
        * configuration: call once per time step.
        */
       void
-      add_forces(const VectorType &               u,
-                 const std::vector<Tensor<1, 3>> &surface_displacement,
-                 VectorType &                     f,
-                 ContactResult &                  result);
+      add_forces(const VectorType &              u,
+                 const std::vector<SurfacePose> &pose,
+                 VectorType &                    f,
+                 ContactResult &                 result);
 
       /**
        * Smallest stable time step of the penalty springs, 2 sqrt(m/k), for

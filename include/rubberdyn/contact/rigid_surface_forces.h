@@ -48,7 +48,7 @@ namespace rubberdyn
     private:
       RigidSurfaceContact &     contact;
       std::vector<unsigned int> body_of_surface;
-      std::vector<Tensor<1, 3>> surface_displacement;
+      std::vector<SurfacePose>  pose;
       ContactResult             contact_result;
     };
   } // namespace contact

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -81,11 +82,16 @@ namespace rubberdyn
       /**
        * Declare a part's whole material subsection (the caller has entered
        * it): `Model`, `Density`, `Poisson's ratio` and every registered
-       * model's own entries.
+       * model's own entries. @p additional_models (name, description)
+       * are further values of `Model` that the caller handles itself
+       * (the Model study's `Rigid`).
        */
       void
-      declare_part_parameters(ParameterHandler &prm,
-                              const PartDefaults &defaults);
+      declare_part_parameters(
+        ParameterHandler &  prm,
+        const PartDefaults &defaults,
+        const std::vector<std::pair<std::string, std::string>>
+          &additional_models = {});
 
       /**
        * Create the law chosen by `Model` in the current subsection, whose

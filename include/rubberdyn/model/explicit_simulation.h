@@ -1,6 +1,7 @@
 #ifndef rubberdyn_model_explicit_simulation_h
 #define rubberdyn_model_explicit_simulation_h
 
+#include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/parameters/contact_parameters.h>
 #include <rubberdyn/parameters/output_parameters.h>
@@ -101,6 +102,16 @@ namespace rubberdyn
       solver() const;
 
       /**
+       * The rigid bodies: those of the rigid surfaces that have their own,
+       * then one per rigid part (with its mass, centre and inertia).
+       */
+      const std::vector<RigidBody> &
+      rigid_bodies() const
+      {
+        return bodies;
+      }
+
+      /**
        * The text of the model parameters of a ParameterHandler: every entry
        * except `Time integration/End time` and the `Output` subsection, one
        * per line (for the restart check).
@@ -151,6 +162,10 @@ namespace rubberdyn
       std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
       std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  contact_forces;
       std::vector<RigidBody>                                     bodies;
+      /** The lumped mass of the rigid parts' cells, or nullptr. */
+      std::unique_ptr<ForceContribution> rigid_part_mass;
+      /** Index among `bodies` of each part's body (rigid parts only). */
+      std::vector<unsigned int> body_of_part;
       std::unique_ptr<time_integration::KinematicConstraints>    constraints;
       std::unique_ptr<time_integration::ExplicitSolver>          explicit_solver;
       std::vector<std::unique_ptr<postprocess::Postprocessor>>   postprocessors;

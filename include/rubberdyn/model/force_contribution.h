@@ -57,6 +57,11 @@ namespace rubberdyn
       double contact_time_step = std::numeric_limits<double>::max();
       /** Force of the solid on each rigid body (kN), indexed like the bodies. */
       std::vector<Tensor<1, 3>> force_on_body;
+      /**
+       * Moment of those forces about each body's current reference point
+       * (kN mm), indexed like the bodies.
+       */
+      std::vector<Tensor<1, 3>> moment_on_body;
       /** Set if an element inverted or another evaluation failed. */
       EvaluationFailure failure;
 

@@ -47,6 +47,24 @@ namespace rubberdyn
       elements::Formulation formulation = elements::Formulation::fbar;
       /** Initial velocity of its nodes (mm/ms). */
       Tensor<1, 3> initial_velocity;
+      /**
+       * A rigid part's initial angular velocity about its centre of mass
+       * (rad/ms), in its free rotations.
+       */
+      Tensor<1, 3> initial_angular_velocity;
+      /**
+       * A rigid part (LS-DYNA's MAT_RIGID): its nodes move with one rigid
+       * body whose mass, centre and inertia come from its elements and the
+       * law's density (plus the mass its nodes get from deformable
+       * neighbours); the law then only gives the density and the contact
+       * stiffness, and its cells have no element forces and no stable
+       * step.
+       */
+      bool rigid = false;
+      /** A rigid part's free translations x, y, z. */
+      bool rigid_free_translation[3] = {true, true, true};
+      /** A rigid part's free rotations about x, y, z. */
+      bool rigid_free_rotation[3] = {true, true, true};
     };
 
     /** A boundary condition on some boundary ids. */
@@ -101,8 +119,16 @@ namespace rubberdyn
       std::string name;
       /** Shape, position, friction coefficient. */
       contact::RigidSurface surface;
-      /** The body that carries it (mass, free directions, velocity). */
+      /**
+       * The body that carries it (mass, free directions, velocity); unused
+       * if the surface is carried by a rigid part.
+       */
       RigidBody body;
+      /**
+       * Name of the rigid part that carries it (its geometry is given at
+       * t = 0 and moves and turns with the part), or empty: its own body.
+       */
+      std::string rigid_part;
       /** Boundary ids of the solid faces that may touch it. */
       std::set<types::boundary_id> boundary_ids;
       /** Penalty scale factor of its springs (-). */
@@ -125,6 +151,10 @@ namespace rubberdyn
        */
       void
       setup();
+
+      /** Index of the part named @p name. @throws if there is none. */
+      unsigned int
+      part_index(const std::string &name) const;
 
       /** Index of the part that holds @p material_id. */
       unsigned int

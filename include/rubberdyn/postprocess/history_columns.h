@@ -98,9 +98,15 @@ namespace rubberdyn
 
 
     /**
-     * Per rigid surface (its body): `<name>_position_x/_y/_z` (mm, of its
-     * reference point), `<name>_velocity_x/_y/_z` (mm/ms) and
-     * `<name>_force_x/_y/_z` (kN, the force of the solid on it).
+     * Per rigid body (of a rigid surface, or a rigid part):
+     * `<name>_position_x/_y/_z` (mm, of its reference point: a rigid part's
+     * centre of mass), `<name>_velocity_x/_y/_z` (mm/ms) and
+     * `<name>_force_x/_y/_z` (kN, the force of the rest of the model on it:
+     * contact and, for a rigid part, its bonded deformable neighbours;
+     * not its weight). A rotating body (rigid part) also gets
+     * `<name>_rotation_x/_y/_z` (its rotation vector, rad),
+     * `<name>_angular_velocity_x/_y/_z` (rad/ms) and
+     * `<name>_moment_x/_y/_z` (kN mm, of that force about its centre).
      */
     class RigidBodyColumns : public Postprocessor
     {
@@ -108,7 +114,14 @@ namespace rubberdyn
       std::string
       name() const override;
 
-      explicit RigidBodyColumns(const std::vector<std::string> &body_names);
+      /**
+       * @param body_names The bodies' names, in the order of the solver's
+       *   bodies.
+       * @param rotating Per body whether it gets the rotation columns;
+       *   empty: none does.
+       */
+      explicit RigidBodyColumns(const std::vector<std::string> &body_names,
+                                const std::vector<bool> &rotating = {});
 
       std::vector<std::string>
       history_columns() const override;
@@ -119,6 +132,7 @@ namespace rubberdyn
 
     private:
       std::vector<std::string> body_names;
+      std::vector<bool>        rotating;
     };
   } // namespace postprocess
 } // namespace rubberdyn

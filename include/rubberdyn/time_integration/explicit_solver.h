@@ -9,6 +9,7 @@
 #include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
+#include <array>
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -119,6 +120,22 @@ namespace rubberdyn
       unsigned int n_groups = 1;
     };
 
+    /**
+     * The locally owned nodes of a rigid part (LS-DYNA's MAT_RIGID): they
+     * move with one rigid body, $x = c + R (X - C)$.
+     */
+    struct RigidPartNodes
+    {
+      /** Index of the part's body among the solver's bodies. */
+      unsigned int body = 0;
+      /** The part's element group (for the per-group sums). */
+      unsigned int group = 0;
+      /** Local indices of the x, y, z dofs of each locally owned node. */
+      std::vector<std::array<unsigned int, 3>> dofs;
+      /** Reference position of each node (mm). */
+      std::vector<Point<3>> X;
+    };
+
     /** Raised when the run cannot go on (inverted element, tiny step). */
     class SolverFailure : public std::runtime_error
     {
@@ -166,6 +183,15 @@ namespace rubberdyn
      * A rigid body with mass 0, or in a held direction, moves with its
      * prescribed velocity; the work it does on the solid,
      * $-F_{solid\to body} \cdot \Delta x_{body}$, is external work.
+     *
+     * Rigid parts (set_rigid_parts()): the nodes of a rigid part move with
+     * its body. The forces on them (from neighbouring deformable elements,
+     * contact, loads, gravity) are summed into the body's force and moment
+     * about its centre; the body advances (translation by central
+     * differences, rotation by Euler's equations, model::RigidBody) and
+     * the nodes get the half-step velocity that takes them exactly to the
+     * body's pose at $t_{n+1}$. Their kinetic energy and momentum are the
+     * body's (counted for the part's group).
      */
     class ExplicitSolver
     {
@@ -210,6 +236,16 @@ namespace rubberdyn
        */
       void
       set_group_masses(const std::vector<VectorType> &group_mass);
+
+      /**
+       * Make the nodes of @p parts move with their bodies (before the first
+       * step). Each body must have its mass, centre (reference_position),
+       * inertia, free directions and initial velocity set; its weight is
+       * summed here from the nodes' gravity forces. The nodes start with
+       * the body's velocity.
+       */
+      void
+      set_rigid_parts(const std::vector<RigidPartNodes> &parts);
 
       /**
        * Advance until @p end_time. After every step @p monitor is called
@@ -315,6 +351,16 @@ namespace rubberdyn
         std::vector<double> mass_by_group;
       };
       std::vector<SharedDof> shared_dofs;
+      /** The rigid parts' owned nodes, and a flag per owned dof. */
+      std::vector<RigidPartNodes> rigid_parts;
+      std::vector<bool>           rigid_dof;
+
+      /**
+       * Give the owned nodes of the rigid parts the half-step velocity
+       * that takes them to their bodies' poses after a step @p step.
+       */
+      void
+      set_rigid_node_velocities(const double step);
 
       double       current_time = 0., last_time_step = 0.;
       unsigned int step_number  = 0;
