@@ -199,6 +199,10 @@ namespace rubberdyn
                 }
               if (gap >= 0.)
                 {
+                  // Separated: the tangential spring lets go, and the
+                  // energy it held is dissipated (the limit fell to zero).
+                  result.friction_dissipation +=
+                    0.5 * tangential_force.norm_square() / node.stiffness;
                   for (unsigned int d = 0; d < 3; ++d)
                     state[d] = 0.;
                   continue;
@@ -223,17 +227,29 @@ namespace rubberdyn
                   if (std::isnan(last_position[0]))
                     increment = 0.;
                   increment -= (increment * normal) * normal;
+                  const Tensor<1, 3> old_force = tangential_force;
                   tangential_force -= node.stiffness * increment;
                   const double limit =
                     surface.friction_coefficient * normal_force;
                   const double trial = tangential_force.norm();
                   if (trial > limit)
                     {
-                      // Slip: back to the cone; the spring relaxes by
-                      // (trial - limit) / k of slip at the force limit.
+                      // Slip: back to the cone. Dissipated: the work the
+                      // node did on the spring over the step (trapezoidal
+                      // rule, as the energy balance sees it) minus what the
+                      // spring now holds more. Steady slip at the limit
+                      // gives limit |increment|; a limit that shrinks with
+                      // no motion gives all the energy released,
+                      // (trial^2 - limit^2) / 2k (the part (trial -
+                      // limit)^2 / 2k of it went missing when only
+                      // limit (trial - limit) / k was booked).
                       tangential_force *= limit / trial;
                       result.friction_dissipation +=
-                        limit * (trial - limit) / node.stiffness;
+                        -0.5 * (old_force + tangential_force) * increment -
+                        0.5 *
+                          (tangential_force.norm_square() -
+                           old_force.norm_square()) /
+                          node.stiffness;
                     }
                   result.penalty_energy += 0.5 *
                                            tangential_force.norm_square() /

@@ -118,10 +118,15 @@ namespace rubberdyn
      * Mechanics, 2006, sect. 5.2). Each evaluation moves the tangential force
      * by $-k\,\Delta u_t$, the increment of the node's displacement
      * relative to the surface projected on the tangent plane; if it exceeds
-     * $\mu |f_n|$ it is scaled back to the Coulomb cone (slip), and the
-     * energy dissipated, $\mu |f_n| \cdot$ (slip increment), is reported.
-     * The spring's stored energy $|f_t|^2/2k$ is part of penalty_energy. A
-     * node that separates forgets its tangential force.
+     * $\mu |f_n|$ it is scaled back to the Coulomb cone (slip). The energy
+     * dissipated in a slipping step is the work the node did on the spring,
+     * $-\tfrac12 (f_t^{old} + f_t^{new}) \cdot \Delta u_t$ (the trapezoidal
+     * rule, as the energy balance sees it), minus the increase of the
+     * stored energy: $\mu |f_n| |\Delta u_t|$ in steady slip, and all the
+     * energy released when the limit shrinks under a node that does not
+     * move. The spring's stored energy $|f_t|^2/2k$ is part of
+     * penalty_energy. A node that separates forgets its tangential force,
+     * and the energy it held is dissipated.
      *
      * The critical time step of a node of mass $m$ on its penalty spring is
      * $2\sqrt{m/k}$, or $2\sqrt{m/(n k)}$ while it touches n surfaces at
@@ -147,8 +152,9 @@ namespace rubberdyn
 
       /**
        * Add the contact forces at displacement @p u (owned entries) with
-       * the surfaces at @p pose into @p f (owned
-       * entries only), and advance the friction state to this
+       * the surfaces at @p pose into @p f (owned entries only), and the
+       * forces of the solid on each surface and their moments about its
+       * current centre into @p result, and advance the friction state to this
        * configuration: call once per time step.
        */
       void
