@@ -154,14 +154,26 @@ namespace rubberdyn
         return tokens;
       }
 
-      /** At most 40 characters of @p text, for messages. */
+      /**
+       * At most 40 characters of @p text, for messages. Bytes that are not
+       * printable ASCII become '?' (a tab a space): a binary file must not
+       * put control characters (which a terminal may act on) or broken
+       * UTF-8 into the one-line message.
+       */
       std::string
       excerpt(const std::string_view text)
       {
         const std::string_view trimmed = trim(text);
-        if (trimmed.size() <= 40)
-          return std::string(trimmed);
-        return std::string(trimmed.substr(0, 37)) + "...";
+        std::string            result(trimmed.size() <= 40 ?
+                                        trimmed :
+                                        trimmed.substr(0, 37));
+        for (char &c : result)
+          if (c == '\t')
+            c = ' ';
+          else if (static_cast<unsigned char>(c) < 0x20 ||
+                   static_cast<unsigned char>(c) >= 0x7f)
+            c = '?';
+        return trimmed.size() <= 40 ? result : result + "...";
       }
 
       /**

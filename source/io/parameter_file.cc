@@ -8,6 +8,7 @@
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/io/parameter_file.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -371,6 +372,13 @@ namespace rubberdyn
               rest.substr(no_subsection_at + no_subsection.size());
             if (ends_with(name, "."))
               name.pop_back();
+            // deal.II names the subsection by its full path with '.'
+            // between the levels ("Parts.rubbr"); keep the last level only,
+            // as path (with '/') names the others.
+            std::string dotted = path;
+            std::replace(dotted.begin(), dotted.end(), '/', '.');
+            if (!dotted.empty() && starts_with(name, dotted))
+              name.erase(0, dotted.size());
             return where + "subsection '" + path + abridged(name) +
                    "': no such subsection is declared";
           }

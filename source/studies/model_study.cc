@@ -160,23 +160,25 @@ namespace rubberdyn
 
       /**
        * A deal.II FunctionParser of x, y, z, t with @p n_components
-       * components separated by ';'.
+       * components separated by ';', from the entry @p path/@p entry.
        */
       std::shared_ptr<FunctionParser<3>>
       make_function(const std::string &expression,
                     const std::string &constants_text,
                     const unsigned int n_components,
                     const std::string &path,
-                    const std::string &which = "one per listed component")
+                    const std::string &which = "one per listed component",
+                    const std::string &entry = "Function expression")
       {
         const std::vector<std::string> parts =
           Utilities::split_string_list(expression, ';');
         if (parts.size() != n_components)
-          throw InputError(path + "/Function expression",
+          throw InputError(path + "/" + entry,
                            "has " + std::to_string(parts.size()) +
                              " components (separated by ';'), but " +
                              std::to_string(n_components) +
-                             " are needed, " + which);
+                             (n_components == 1 ? " is" : " are") +
+                             " needed, " + which);
         std::map<std::string, double> constants;
         for (const std::string &item :
              Utilities::split_string_list(constants_text, ','))
@@ -229,14 +231,14 @@ namespace rubberdyn
             for (const char c : text)
               if (!(c == ' ' && (folded.empty() || folded.back() == ' ')))
                 folded += c;
-            throw InputError(path + "/Function expression",
+            throw InputError(path + "/" + entry,
                              "'" + expression.substr(0, 80) +
                                "' does not parse: " + folded.substr(0, 200));
           }
         catch (...)
           {
             std::cerr.rdbuf(cerr_buffer);
-            throw InputError(path + "/Function expression",
+            throw InputError(path + "/" + entry,
                              "'" + expression.substr(0, 80) +
                                "' does not parse");
           }
@@ -761,9 +763,12 @@ namespace rubberdyn
             }
           body.velocity = parse_vector(prm.get("Initial velocity"),
                                        path + "/Initial velocity");
+          // Named as 'Velocity function' in the messages (it was reported
+          // as a 'Function expression', which rigid surfaces do not have).
           const std::shared_ptr<FunctionParser<3>> velocity =
             make_function(prm.get("Velocity function"),
-                          prm.get("Function constants"), 3, path);
+                          prm.get("Function constants"), 3, path,
+                          "one per direction x, y, z", "Velocity function");
           if (uses_position(prm.get("Velocity function")))
             throw InputError(path + "/Velocity function",
                              "may depend on t only");
