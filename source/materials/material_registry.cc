@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/base/registry.h>
 #include <rubberdyn/materials/material_registry.h>
 
 #include <map>
@@ -15,21 +16,18 @@ namespace rubberdyn
     {
       namespace
       {
+        /** What a law registers: how to declare and create it. */
         struct Entry
         {
-          std::string       description;
           DeclareFunction   declare;
           CreateFunction<2> create_2d;
           CreateFunction<3> create_3d;
         };
 
-        // Function-local static: safe against the static initialization
-        // order of the registering translation units.
-        std::map<std::string, Entry> &
-        entries()
+        Registry<Entry> &
+        laws()
         {
-          static std::map<std::string, Entry> map;
-          return map;
+          return Registry<Entry>::instance();
         }
 
         template <int dim>
@@ -59,8 +57,8 @@ namespace rubberdyn
                         const CreateFunction<2> &create_2d,
                         const CreateFunction<3> &create_3d)
       {
-        entries()[name] = Entry{description, declare, create_2d, create_3d};
-        return 0;
+        return laws().add(name, description,
+                          Entry{declare, create_2d, create_3d});
       }
 
 
@@ -68,10 +66,7 @@ namespace rubberdyn
       std::vector<std::string>
       names()
       {
-        std::vector<std::string> result;
-        for (const auto &entry : entries())
-          result.push_back(entry.first);
-        return result;
+        return laws().names();
       }
 
 
@@ -79,10 +74,7 @@ namespace rubberdyn
       std::string
       pattern_string()
       {
-        std::string result;
-        for (const auto &entry : entries())
-          result += (result.empty() ? "" : "|") + entry.first;
-        return result;
+        return laws().pattern();
       }
 
 
@@ -95,9 +87,7 @@ namespace rubberdyn
           &additional_models)
       {
         std::ostringstream doc;
-        doc << "Constitutive law of this part. One of:";
-        for (const auto &entry : entries())
-          doc << "\n'" << entry.first << "': " << entry.second.description;
+        doc << laws().documentation("Constitutive law of this part. One of:");
         std::string pattern = pattern_string();
         for (const auto &model : additional_models)
           {
@@ -127,8 +117,9 @@ namespace rubberdyn
                           Patterns::Double(0.),
                           "Small-strain Young's modulus E (GPa) of 'Elastic' "
                           "and 'J2 plasticity'. Steel: 210, aluminium: 70.");
-        for (const auto &entry : entries())
-          entry.second.declare(prm);
+        laws().for_each([&prm](const std::string &, const Entry &entry) {
+          entry.declare(prm);
+        });
       }
 
 
@@ -138,13 +129,13 @@ namespace rubberdyn
       create(const ParameterHandler &prm, const std::string &path)
       {
         const std::string name = prm.get("Model");
-        const auto        it   = entries().find(name);
-        if (it == entries().end())
+        const Entry      *entry = laws().find(name);
+        if (entry == nullptr)
           throw InputError(path + "/Model",
                            "unknown material model '" + name +
                              "'; valid names are " + pattern_string());
         std::unique_ptr<MaterialModel<dim>> law =
-          factory<dim>(it->second)(prm, path);
+          factory<dim>(*entry)(prm, path);
         // Every law, also one added later, has its moduli, wave speed and
         // whatever else it derives checked here, before anything runs.
         check_derived_constants(*law, path);

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/registry.h>
 #include <rubberdyn/parameters/contact_parameters.h>
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
@@ -25,18 +26,17 @@ namespace rubberdyn
     {
       namespace
       {
+        /** What a study registers: how to declare and create it. */
         struct Entry
         {
-          std::string     description;
           DeclareFunction declare;
           CreateFunction  create;
         };
 
-        std::map<std::string, Entry> &
-        entries()
+        Registry<Entry> &
+        studies()
         {
-          static std::map<std::string, Entry> map;
-          return map;
+          return Registry<Entry>::instance();
         }
       } // namespace
 
@@ -47,8 +47,7 @@ namespace rubberdyn
                      const DeclareFunction &declare,
                      const CreateFunction & create)
       {
-        entries()[name] = Entry{description, declare, create};
-        return 0;
+        return studies().add(name, description, Entry{declare, create});
       }
 
 
@@ -56,10 +55,7 @@ namespace rubberdyn
       std::vector<std::string>
       names()
       {
-        std::vector<std::string> result;
-        for (const auto &entry : entries())
-          result.push_back(entry.first);
-        return result;
+        return studies().names();
       }
 
 
@@ -67,25 +63,18 @@ namespace rubberdyn
       void
       declare_parameters(dealii::ParameterHandler &prm, const ListedNames &names)
       {
-        std::ostringstream doc;
-        std::string        pattern;
-        doc << "The study to run. One of:";
-        for (const auto &entry : entries())
-          {
-            doc << "\n'" << entry.first << "': " << entry.second.description;
-            pattern += (pattern.empty() ? "" : "|") + entry.first;
-          }
         prm.declare_entry("Study",
                           "Drop test",
-                          dealii::Patterns::Selection(pattern),
-                          doc.str());
+                          dealii::Patterns::Selection(studies().pattern()),
+                          studies().documentation("The study to run. One of:"));
 
         parameters::TimeIntegration::declare_parameters(prm);
         parameters::Contact::declare_parameters(prm);
         parameters::Output::declare_parameters(prm);
 
-        for (const auto &entry : entries())
-          entry.second.declare(prm, names);
+        studies().for_each([&](const std::string &, const Entry &entry) {
+          entry.declare(prm, names);
+        });
       }
 
 
@@ -94,8 +83,8 @@ namespace rubberdyn
       create(dealii::ParameterHandler &prm, const std::string &parameter_file)
       {
         const std::string name = prm.get("Study");
-        const auto        it   = entries().find(name);
-        if (it == entries().end())
+        const Entry      *entry = studies().find(name);
+        if (entry == nullptr)
           throw InputError("Study", "unknown study '" + name + "'");
         // Every study writes below it: an empty name would put the results
         // in the root directory ("" + "/file").
@@ -106,7 +95,7 @@ namespace rubberdyn
           throw InputError("Output/Output directory",
                            "must not be empty (use '.' for the working "
                            "directory)");
-        return it->second.create(prm, parameter_file);
+        return entry->create(prm, parameter_file);
       }
     } // namespace registry
   }   // namespace studies
