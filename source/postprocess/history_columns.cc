@@ -54,6 +54,7 @@ namespace rubberdyn
                                           "energy_error"};
       if (with_friction_work)
         columns.push_back("friction_work");
+      columns.push_back("energy_error_deformable");
       return columns;
     }
 
@@ -71,6 +72,7 @@ namespace rubberdyn
         values.push_back(value);
       if (with_friction_work)
         values.push_back(e.friction_work);
+      values.push_back(e.deformable_relative_error());
     }
 
 

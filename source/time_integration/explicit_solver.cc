@@ -7,6 +7,7 @@
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -47,6 +48,79 @@ namespace rubberdyn
                         std::abs(contact) + std::abs(bulk_viscosity_work) +
                         std::abs(friction_work),
                       std::abs(initial) + std::abs(external_work));
+    }
+
+
+
+    double
+    EnergyBalance::deformable_scale() const
+    {
+      return std::abs(kinetic - rigid_kinetic) + std::abs(internal) +
+             std::abs(contact) + std::abs(bulk_viscosity_work) +
+             std::abs(friction_work);
+    }
+
+
+
+    double
+    EnergyBalance::deformable_relative_error() const
+    {
+      const double scale =
+        std::max({largest_deformable,
+                  deformable_scale(),
+                  0.01 * std::max(largest_energy, current_scale())});
+      return scale > 0. ? absolute_error() / scale : 0.;
+    }
+
+
+
+    void
+    DeformableErrorRecord::add(const double error, const double deformable)
+    {
+      if (!records.empty() && records.back().first == deformable &&
+          error >= records.back().second)
+        records.pop_back();
+      if (records.empty() || error > 1.001 * records.back().second)
+        records.emplace_back(deformable, error);
+    }
+
+
+
+    double
+    DeformableErrorRecord::value(const double floor) const
+    {
+      double largest = 0.;
+      for (const auto &record : records)
+        {
+          const double scale = std::max(record.first, floor);
+          if (scale > 0.)
+            largest = std::max(largest, record.second / scale);
+        }
+      return largest;
+    }
+
+
+
+    std::vector<double>
+    DeformableErrorRecord::state() const
+    {
+      std::vector<double> values;
+      for (const auto &record : records)
+        {
+          values.push_back(record.first);
+          values.push_back(record.second);
+        }
+      return values;
+    }
+
+
+
+    void
+    DeformableErrorRecord::set_state(const std::vector<double> &state)
+    {
+      records.clear();
+      for (unsigned int i = 0; i + 1 < state.size(); i += 2)
+        records.emplace_back(state[i], state[i + 1]);
     }
 
 
@@ -321,7 +395,7 @@ namespace rubberdyn
               body.rotation[d][e] = values[15 + 3 * d + e];
           }
       }
-      constexpr unsigned int n_scalars           = 15;
+      constexpr unsigned int n_scalars           = 17;
     } // namespace
 
 
@@ -348,7 +422,9 @@ namespace rubberdyn
                                          energy.initial,
                                          energy.largest_energy,
                                          double(bodies.size()),
-                                         constraint_work_ahead};
+                                         constraint_work_ahead,
+                                         energy.rigid_kinetic,
+                                         energy.largest_deformable};
       write_doubles(out, scalars, n_scalars);
       const unsigned int n_owned = partitioner->locally_owned_size();
       write_doubles(out, u.begin(), n_owned);
@@ -427,6 +503,8 @@ namespace rubberdyn
           energy.initial             = scalars[11];
           energy.largest_energy      = scalars[12];
           constraint_work_ahead      = scalars[14];
+          energy.rigid_kinetic       = scalars[15];
+          energy.largest_deformable  = scalars[16];
           const unsigned int n_owned = partitioner->locally_owned_size();
           read_doubles(in, u.begin(), n_owned, "displacements");
           read_doubles(in, v.begin(), n_owned, "velocities");
@@ -807,6 +885,7 @@ namespace rubberdyn
                   sums[group_offset + n_groups + 4 * g + 1 + d];
             }
           const double half_step_time = current_time + 0.5 * new_step;
+          energy.rigid_kinetic        = 0.;
           for (unsigned int b = 0; b < n_bodies; ++b)
             {
               RigidBody &body = bodies[b];
@@ -879,6 +958,7 @@ namespace rubberdyn
                   body.angular_velocity = w_next;
                 }
               energy.kinetic += body_kinetic;
+              energy.rigid_kinetic += body_kinetic;
               if (body.carries_nodes)
                 for (const RigidPartNodes &part : rigid_parts)
                   if (part.body == b)
@@ -893,6 +973,8 @@ namespace rubberdyn
 
           energy.largest_energy =
             std::max(energy.largest_energy, energy.current_scale());
+          energy.largest_deformable =
+            std::max(energy.largest_deformable, energy.deformable_scale());
 
           // Output sees the state at t_n and the step about to be taken.
           last_time_step = new_step;

@@ -7,6 +7,7 @@
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/postprocess/postprocessor.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
 
 #include <iosfwd>
 #include <memory>
@@ -186,6 +187,13 @@ namespace rubberdyn
        * divided by the run's largest energy.
        */
       double max_energy_error = 0.;
+      /**
+       * The errors against the energy through the deformable parts; at
+       * the end its value with the floor 1 % of the run's largest energy
+       * (what the 1 % criterion judges) goes to max_deformable_error.
+       */
+      time_integration::DeformableErrorRecord deformable_errors;
+      double                                  max_deformable_error = 0.;
       /** The checkpoint being read: its folder, step and time. */
       std::string   checkpoint_directory;
       unsigned long checkpoint_step = 0;

@@ -13,8 +13,11 @@ namespace rubberdyn
     /**
      * The energy columns of time_history.csv (J): kinetic_energy,
      * internal_energy, external_work, contact_work, bulk_viscosity_work,
-     * then added_mass (kg) and energy_error (-), and optionally
-     * friction_work (J).
+     * then added_mass (kg) and energy_error (-, relative to the largest
+     * energy so far), optionally friction_work (J), and
+     * energy_error_deformable (-, relative to the largest energy that has
+     * flowed through the deformable parts so far; see
+     * time_integration::EnergyBalance::deformable_relative_error()).
      */
     class EnergyColumns : public Postprocessor
     {

@@ -13,6 +13,7 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,6 +49,13 @@ namespace rubberdyn
       /** Largest current_scale() of the run so far. */
       double largest_energy = 0.;
       /**
+       * Kinetic energy of the rigid bodies (rigid surfaces' carriers and
+       * rigid parts), part of `kinetic` (J).
+       */
+      double rigid_kinetic = 0.;
+      /** Largest deformable_scale() of the run so far. */
+      double largest_deformable = 0.;
+      /**
        * |E_kin + E_int + E_contact + W_bulk viscosity + W_friction - E_0 -
        * W_ext| divided by the largest energy of the run so far
        * (largest_energy, or current_scale() if larger). Dividing by the
@@ -72,6 +80,66 @@ namespace rubberdyn
        */
       double
       current_scale() const;
+
+      /**
+       * The energy that flows through the deformable parts now: their
+       * kinetic energy (all but the rigid bodies'), internal, contact,
+       * bulk-viscosity and friction energy (J).
+       */
+      double
+      deformable_scale() const;
+
+      /**
+       * absolute_error() divided by the largest energy that has flowed
+       * through the deformable parts so far (largest_deformable, or
+       * deformable_scale() if larger), but at least 1 % of the largest
+       * energy so far (so that round-off before any deformation is not
+       * divided by nothing): never more lenient than relative_error(). A
+       * 10 J impactor no longer hides the loss of a rubber part's 0.04 J.
+       * The run is judged by DeformableErrorRecord, with the floor of the
+       * whole run.
+       */
+      double
+      deformable_relative_error() const;
+    };
+
+    /**
+     * The run's energy error judged against the energy through its
+     * deformable parts: $\max_t e(t) / \max(d(t), F)$, with $e$ the
+     * absolute error, $d$ the largest deformable energy up to t
+     * (EnergyBalance::largest_deformable) and the floor F known only at the
+     * end (1 % of the run's largest energy: round-off and start-up errors
+     * of a body starting at rest, 1e-12 J when everything is 1e-12 J, are
+     * not judged against nothing). A loss early in an impact, when the
+     * rubber holds 0.04 J and the impactor 10 J, is judged against the
+     * 0.04 J.
+     *
+     * Since d never decreases, only the steps with a record error can
+     * attain the maximum for some F: add() keeps those (d, e), thinned so
+     * that each kept error exceeds the last by 0.1 % (value() is exact to
+     * 0.1 %; a few thousand pairs at most).
+     */
+    class DeformableErrorRecord
+    {
+    public:
+      /** Record the error @p error (J) with the deformable energy @p d (J). */
+      void
+      add(const double error, const double deformable);
+
+      /** max over the recorded steps of error / max(d, @p floor). */
+      double
+      value(const double floor) const;
+
+      /** The pairs (d, e), for checkpoints. */
+      std::vector<double>
+      state() const;
+
+      /** Restore what state() returned. */
+      void
+      set_state(const std::vector<double> &state);
+
+    private:
+      std::vector<std::pair<double, double>> records;
     };
 
     /**
