@@ -199,10 +199,20 @@ namespace rubberdyn
                 }
               if (gap >= 0.)
                 {
-                  // Separated: the tangential spring lets go, and the
-                  // energy it held is dissipated (the limit fell to zero).
-                  result.friction_dissipation +=
-                    0.5 * tangential_force.norm_square() / node.stiffness;
+                  // Separated: the tangential spring lets go. Dissipated, as
+                  // in a slipping step with the new force zero: the
+                  // trapezoidal work of the old force over this step's
+                  // tangential motion plus the energy the spring held.
+                  if (!std::isnan(last_position[0]) &&
+                      tangential_force.norm_square() > 0.)
+                    {
+                      Tensor<1, 3> increment = x_relative - last_position;
+                      increment -= (increment * normal) * normal;
+                      result.friction_dissipation +=
+                        -0.5 * tangential_force * increment +
+                        0.5 * tangential_force.norm_square() /
+                          node.stiffness;
+                    }
                   for (unsigned int d = 0; d < 3; ++d)
                     state[d] = 0.;
                   continue;

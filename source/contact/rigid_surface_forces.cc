@@ -65,10 +65,37 @@ namespace rubberdyn
 
 
     void
+    RigidSurfaceForces::accept_step()
+    {
+      accepted_friction_work += contact_result.friction_dissipation;
+      contact_result.friction_dissipation = 0.;
+    }
+
+
+
+    double
+    RigidSurfaceForces::contact_energy() const
+    {
+      return contact_result.penalty_energy;
+    }
+
+
+
+    double
+    RigidSurfaceForces::friction_work() const
+    {
+      return accepted_friction_work + contact_result.friction_dissipation;
+    }
+
+
+
+    void
     RigidSurfaceForces::save(std::ostream &out) const
     {
       const std::vector<double> &state = contact.state();
       binary_io::write_doubles(out, state.data(), state.size());
+      binary_io::write_doubles(out, &accepted_friction_work, 1);
+      binary_io::write_doubles(out, &contact_result.penalty_energy, 1);
     }
 
 
@@ -78,6 +105,11 @@ namespace rubberdyn
     {
       std::vector<double> &state = contact.state();
       binary_io::read_doubles(in, state.data(), state.size(), "contact state");
+      binary_io::read_doubles(in, &accepted_friction_work, 1,
+                              "friction work");
+      binary_io::read_doubles(in, &contact_result.penalty_energy, 1,
+                              "contact energy");
+      contact_result.friction_dissipation = 0.;
     }
   } // namespace contact
 } // namespace rubberdyn

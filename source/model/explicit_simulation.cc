@@ -321,6 +321,86 @@ namespace rubberdyn
         const SurfaceLoads *                                  loads;
         std::vector<unsigned int>                             condition_of_load;
       };
+      /**
+       * The energy balance per interaction (LS-DYNA's SLEOUT and the
+       * boundary work of GLSTAT): for every boundary condition `<bc>_work`
+       * (J, the work it has done on the body: a kinematic condition's
+       * reactions, a load's forces; the external work is their sum plus
+       * gravity's and the driven rigid bodies'), and for every rigid
+       * surface `<name>_contact_energy` (J, in its penalty springs) and
+       * `<name>_friction_work` (J, dissipated by its friction). Summed over
+       * the ranks at output times only.
+       */
+      class InteractionEnergyColumns : public postprocess::Postprocessor
+      {
+      public:
+        InteractionEnergyColumns(
+          const Model &                                   model,
+          const std::vector<unsigned int> &               condition_of_group,
+          const SurfaceLoads *                            loads,
+          const std::vector<unsigned int> &               condition_of_load,
+          const std::vector<const contact::RigidSurfaceForces *> &surfaces)
+          : model(model)
+          , condition_of_group(condition_of_group)
+          , loads(loads)
+          , condition_of_load(condition_of_load)
+          , surfaces(surfaces)
+        {}
+
+        std::string
+        name() const override
+        {
+          return "interaction energies";
+        }
+
+        std::vector<std::string>
+        history_columns() const override
+        {
+          std::vector<std::string> columns;
+          for (const BoundaryCondition &bc : model.boundary_conditions)
+            columns.push_back(bc.name + "_work");
+          for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+            {
+              columns.push_back(surface.name + "_contact_energy");
+              columns.push_back(surface.name + "_friction_work");
+            }
+          return columns;
+        }
+
+        void
+        history_values(const postprocess::SimulationView &view,
+                       std::vector<double> &              values) override
+        {
+          std::vector<double> work(model.boundary_conditions.size(), 0.);
+          const std::vector<double> &by_group = view.solver.reaction_works();
+          for (unsigned int g = 0; g < by_group.size(); ++g)
+            work[condition_of_group[g]] += by_group[g];
+          if (loads != nullptr)
+            {
+              const std::vector<double> load_work = loads->works();
+              for (unsigned int l = 0; l < load_work.size(); ++l)
+                work[condition_of_load[l]] += load_work[l];
+            }
+          values.insert(values.end(), work.begin(), work.end());
+          std::vector<double> energies;
+          for (const contact::RigidSurfaceForces *surface : surfaces)
+            {
+              energies.push_back(surface->contact_energy());
+              energies.push_back(surface->friction_work());
+            }
+          Utilities::MPI::sum(ArrayView<const double>(energies),
+                              model.comm,
+                              ArrayView<double>(energies));
+          values.insert(values.end(), energies.begin(), energies.end());
+        }
+
+      private:
+        const Model &                                    model;
+        std::vector<unsigned int>                        condition_of_group;
+        const SurfaceLoads *                             loads;
+        std::vector<unsigned int>                        condition_of_load;
+        std::vector<const contact::RigidSurfaceForces *> surfaces;
+      };
     } // namespace
 
 
@@ -651,6 +731,12 @@ namespace rubberdyn
         }
       add_postprocessor(
         std::make_unique<postprocess::RigidBodyColumns>(names, rotating));
+      std::vector<const contact::RigidSurfaceForces *> surfaces;
+      for (const auto &surface : contact_forces)
+        surfaces.push_back(surface.get());
+      add_postprocessor(std::make_unique<InteractionEnergyColumns>(
+        model, condition_of_group, surface_loads.get(), condition_of_load,
+        surfaces));
     }
 
 

@@ -355,10 +355,13 @@ namespace rubberdyn
             for (unsigned int d = 0; d < 3; ++d)
               f.local_element(load.node_dofs[n][d]) -= load.force[3 * n + d];
           // W^n = (f^{n-1} + f^n) / 2 . (u^n - u^{n-1}).
+          load.work_pending = 0.;
           if (has_previous)
             for (unsigned int i = 0; i < 3 * n_nodes; ++i)
-              work += 0.5 * (load.previous_force[i] + load.force[i]) *
-                      (load.displacement[i] - load.previous_displacement[i]);
+              load.work_pending +=
+                0.5 * (load.previous_force[i] + load.force[i]) *
+                (load.displacement[i] - load.previous_displacement[i]);
+          work += load.work_pending;
         }
       results.external_work += work;
     }
@@ -372,6 +375,8 @@ namespace rubberdyn
         {
           load.previous_force        = load.force;
           load.previous_displacement = load.displacement;
+          load.work += load.work_pending;
+          load.work_pending = 0.;
         }
       has_previous = true;
     }
@@ -385,6 +390,7 @@ namespace rubberdyn
       binary_io::write_doubles(out, header, 2);
       for (const Load &load : loads)
         {
+          binary_io::write_doubles(out, &load.work, 1);
           binary_io::write_doubles(out,
                                    load.previous_force.data(),
                                    load.previous_force.size());
@@ -408,6 +414,8 @@ namespace rubberdyn
       has_previous = header[1] != 0.;
       for (Load &load : loads)
         {
+          binary_io::read_doubles(in, &load.work, 1, "work of load " + load.name);
+          load.work_pending = 0.;
           binary_io::read_doubles(in,
                                   load.previous_force.data(),
                                   load.previous_force.size(),
@@ -458,6 +466,20 @@ namespace rubberdyn
             result[l].moment[d] = sums[6 * l + 3 + d];
           }
       return result;
+    }
+
+
+
+    std::vector<double>
+    SurfaceLoads::works() const
+    {
+      std::vector<double> work(loads.size());
+      for (unsigned int l = 0; l < loads.size(); ++l)
+        work[l] = loads[l].work + loads[l].work_pending;
+      Utilities::MPI::sum(ArrayView<const double>(work),
+                          partitioner->get_mpi_communicator(),
+                          ArrayView<double>(work));
+      return work;
     }
   } // namespace model
 } // namespace rubberdyn

@@ -197,6 +197,8 @@ namespace rubberdyn
       if (constraints != nullptr)
         {
           reaction.assign(constraints->n_groups(), 0.);
+          reaction_work.assign(constraints->n_groups(), 0.);
+          reaction_work_ahead.assign(constraints->n_groups(), 0.);
           reaction_moment.assign(constraints->n_groups(), Tensor<1, 3>());
         }
       // Every body's initial velocity in its prescribed directions.
@@ -441,6 +443,8 @@ namespace rubberdyn
         for (unsigned int d = 0; d < 3; ++d)
           moments.push_back(m[d]);
       write_doubles(out, moments.data(), moments.size());
+      write_doubles(out, reaction_work.data(), reaction_work.size());
+      write_doubles(out, reaction_work_ahead.data(), reaction_work_ahead.size());
       std::vector<double> by_group = group_internal_energy;
       for (const GroupMotion &motion : group_motion)
         {
@@ -520,6 +524,10 @@ namespace rubberdyn
           for (unsigned int g = 0; g < reaction_moment.size(); ++g)
             for (unsigned int d = 0; d < 3; ++d)
               reaction_moment[g][d] = moments[3 * g + d];
+          read_doubles(in, reaction_work.data(), reaction_work.size(),
+                       "reaction work");
+          read_doubles(in, reaction_work_ahead.data(),
+                       reaction_work_ahead.size(), "reaction work");
           std::vector<double> by_group(5 * settings.n_groups);
           read_doubles(in, by_group.data(), by_group.size(), "part energies");
           for (unsigned int g = 0; g < settings.n_groups; ++g)
@@ -642,9 +650,11 @@ namespace rubberdyn
       const unsigned int     body_offset   = n_energy_sums;
       const unsigned int     reaction_offset = body_offset + 6 * n_bodies;
       const unsigned int     moment_offset   = reaction_offset + n_cgroups;
-      const unsigned int     group_offset    = moment_offset + 3 * n_cgroups;
+      // Per constraint group: reaction, moment (3), work up to t_n and its
+      // share on [t_n, t_{n+1}].
+      const unsigned int     group_offset    = moment_offset + 5 * n_cgroups;
       std::vector<double> sums(group_offset + 5 * n_groups);
-      std::vector<double> local_reaction(4 * n_cgroups);
+      std::vector<double> local_reaction(6 * n_cgroups);
       std::vector<double> shared_velocity(shared_dofs.size());
       // Kinetic energy and momentum per group, plus one bucket for the
       // shared dofs (distributed by mass afterwards).
@@ -764,14 +774,18 @@ namespace rubberdyn
                       local_reaction[n_cgroups + 3 * entry.group + d] +=
                         moment[d];
                   }
+                  double work = 0., work_next;
                   if (started)
                     {
-                      constraint_work += 0.5 * r * v_old * last_time_step;
-                      constraint_work_next += 0.5 * r * v_new * new_step;
+                      work      = 0.5 * r * v_old * last_time_step;
+                      work_next = 0.5 * r * v_new * new_step;
                     }
                   else
-                    constraint_work_next +=
-                      r * 0.5 * (v_old + v_new) * average_step;
+                    work_next = r * 0.5 * (v_old + v_new) * average_step;
+                  constraint_work += work;
+                  constraint_work_next += work_next;
+                  local_reaction[4 * n_cgroups + entry.group] += work;
+                  local_reaction[5 * n_cgroups + entry.group] += work_next;
                   const unsigned int g = dof_group[i];
                   const double mean_new  = w_old * v_old + w_new * v_new;
                   const double mean_free = w_old * v_old + w_new * v_free;
@@ -845,7 +859,7 @@ namespace rubberdyn
                     }
                 }
             }
-          for (unsigned int g = 0; g < 4 * n_cgroups; ++g)
+          for (unsigned int g = 0; g < 6 * n_cgroups; ++g)
             sums[reaction_offset + g] = local_reaction[g];
           for (unsigned int g = 0; g < n_groups; ++g)
             {
@@ -874,6 +888,11 @@ namespace rubberdyn
               for (unsigned int d = 0; d < 3; ++d)
                 reaction_moment[g][d] =
                   sums[reaction_offset + n_cgroups + 3 * g + d];
+              // The same trapezoidal work as the external work's, per group.
+              reaction_work[g] += reaction_work_ahead[g] +
+                                  sums[reaction_offset + 4 * n_cgroups + g];
+              reaction_work_ahead[g] =
+                sums[reaction_offset + 5 * n_cgroups + g];
             }
           for (unsigned int g = 0; g < n_groups; ++g)
             {

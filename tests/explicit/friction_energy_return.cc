@@ -20,6 +20,12 @@
 //      steady slip, which dissipates mu f_n per unit of slip (checked: the
 //      dissipation of the sliding steps against mu f_n times the slip, to
 //      1e-12).
+// A node that separates lets its spring go: dissipated is the energy it
+// held plus the trapezoidal work of its force over the last step (as in a
+// slipping step with the new force zero). Without that work term the
+// bouncing, sliding block of explicit/friction_block_on_slope lost half a
+// step's friction at every bounce: its energy error went from 0.19 % to
+// 2.8 %.
 // The old booking, mu f_n times the slip increment on the return, misses
 // (trial - limit)^2 / 2k per return: in C nearly all of k (0.002)^2 / 2 per
 // node (measured with it: the balance was off by 97 % of the sheared

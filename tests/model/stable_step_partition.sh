@@ -190,16 +190,20 @@ for nproc in $(seq 2 "$max_ranks"); do
   # reactions and contact forces), every force column (a force that is
   # zero but for round-off, the wall's before the wave arrives, is
   # round-off of the forces that flow through the model); likewise for a
-  # moment every moment column; for another component of a vector (`_x`,
+  # moment every moment column; for an energy or work (`..._energy`,
+  # `..._work`: a contact energy of 1e-24 J is round-off of the energies
+  # that flow) every energy column; for another component of a vector (`_x`,
   # `_y`, `_z`), its three components (a component zero by symmetry is
-  # round-off of the vector's size); for energy_error 1 (it is already
-  # divided by the run's largest energy); else the column itself.
+  # round-off of the vector's size); for energy_error and
+  # energy_error_deformable 1 (they are already divided by an energy of the
+  # run); else the column itself.
   awk -F, -v nproc="$nproc" -v label="$case" '
     function abs(x) { return x < 0 ? -x : x }
     function unit9(x) { return x == 0 ? 0 : 10 ^ (int(log(x) / log(10) + 100) - 100 - 8) }
     function family(s) {
       if (s ~ /_force(_[xyz])?$/) return "all forces"
       if (s ~ /_moment_[xyz]$/) return "all moments"
+      if (s ~ /(energy|_work)$/) return "all energies"
       return s ~ /_[xyz]$/ ? substr(s, 1, length(s) - 2) : s
     }
     FNR == 1 { if (FILENAME == ARGV[1]) { n = NF; for (i = 1; i <= NF; ++i) name[i] = $i }
@@ -210,7 +214,7 @@ for nproc in $(seq 2 "$max_ranks"); do
       if (FILENAME == ARGV[1]) rows = r }
     END {
       if (r != rows) { printf "row counts differ: %d and %d\n", rows, r; exit 1 }
-      scale["energy_error"] = 1
+      scale["energy_error"] = 1; scale["energy_error_deformable"] = 1
       bad = 0; worst = 0; worst_name = ""
       for (i = 1; i <= n; ++i) {
         if (name[i] == "time" || name[i] == "time_step") continue

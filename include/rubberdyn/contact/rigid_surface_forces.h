@@ -40,6 +40,23 @@ namespace rubberdyn
                  model::ContributionResults &  results) override;
 
       void
+      accept_step() override;
+
+      /**
+       * Energy in this contact's penalty springs at the last evaluation
+       * (J), this rank's nodes.
+       */
+      double
+      contact_energy() const;
+
+      /**
+       * Energy its friction has dissipated up to the last evaluation (J),
+       * this rank's nodes.
+       */
+      double
+      friction_work() const;
+
+      void
       save(std::ostream &out) const override;
 
       void
@@ -50,6 +67,8 @@ namespace rubberdyn
       std::vector<unsigned int> body_of_surface;
       std::vector<SurfacePose>  pose;
       ContactResult             contact_result;
+      /** Friction work up to the last accepted step, this rank (J). */
+      double accepted_friction_work = 0.;
     };
   } // namespace contact
 } // namespace rubberdyn

@@ -176,6 +176,14 @@ namespace rubberdyn
       std::vector<Resultant>
       resultants() const;
 
+      /**
+       * The work (J) each load has done on the solid up to the last
+       * evaluation (its share of the external work), summed over all ranks
+       * (collective).
+       */
+      std::vector<double>
+      works() const;
+
     private:
       /** One load and its faces on this rank. */
       struct Load
@@ -186,6 +194,11 @@ namespace rubberdyn
         std::vector<std::function<double(const Point<3> &, double)>> functions;
         bool     depends_on_position = false;
         Point<3> moment_point;
+        /**
+         * Work on this rank's faces up to the last accepted step, and that
+         * of the last evaluation (J).
+         */
+        double work = 0., work_pending = 0.;
 
         /** Local vector indices of the x, y, z dofs of each node. */
         std::vector<std::array<unsigned int, 3>> node_dofs;

@@ -368,6 +368,15 @@ namespace rubberdyn
         return reaction_moment;
       }
       /**
+       * Work (J) each group of the kinematic constraints has done on the
+       * solid up to the current time (its share of the external work; the
+       * trapezoidal rule of the energy balance), summed over all ranks.
+       */
+      const std::vector<double> &reaction_works() const
+      {
+        return reaction_work;
+      }
+      /**
        * Write this rank's part of the complete model state between two
        * steps (time, step, displacements, velocities, energies, rigid
        * bodies, reactions, every contribution's state) to @p out, binary.
@@ -441,6 +450,8 @@ namespace rubberdyn
       double                      gravity_work_increment = 0.;
       std::vector<double>         reaction;
       std::vector<Tensor<1, 3>>   reaction_moment;
+      /** Work of each constraint group up to t_n, and its share ahead. */
+      std::vector<double> reaction_work, reaction_work_ahead;
       /**
        * The constraints' reactions' share of their work on [t_n, t_{n+1}]
        * (summed over all ranks): it belongs to the energies at t_{n+1}.
