@@ -33,7 +33,7 @@ exe=$1; source_dir=$2; name=$3; nproc=${4:-1}
 # It writes NAME.prm, log.txt and NAME/ in the working directory: only in
 # the test's own directory.
 case $PWD in
-  */tests/app/"$name"_physics) ;;
+  */tests/app/"$name"_physics|*/tests/app/"$name"_physics_"$nproc") ;;
   *) echo "run drop_test_physics.sh only in build/tests/app/${name}_physics" >&2
      exit 1 ;;
 esac
