@@ -397,6 +397,18 @@ namespace rubberdyn
         // estimate; the limit is four orders above any real run.
         const double first_step =
           time_integration.time_step_scale * smallest_element_time_step();
+        // The solver's first step is at most first_step (contact can only
+        // shorten it): a Minimum time step above it stops every run at its
+        // first step, after writing the state.
+        if (time_integration.minimum_time_step > first_step)
+          throw InputError(
+            "Time integration/Minimum time step",
+            "is " +
+              parameter_tools::format_short(
+                time_integration.minimum_time_step) +
+              " ms, above the first stable time step of " +
+              parameter_tools::format_short(first_step) +
+              " ms: the run would stop at its first step");
         const double n_steps = time_integration.end_time / first_step;
         if (n_steps > parameters::TimeIntegration::max_time_steps)
           throw InputError(

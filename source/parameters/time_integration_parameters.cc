@@ -29,7 +29,7 @@ namespace rubberdyn
                         "time step (reference study eq. 2.12).");
       prm.declare_entry("Minimum time step", "1e-7", Patterns::Double(0.),
                         "The run stops with an error if the time step falls "
-                        "below this (ms).");
+                        "below this (ms). At most the first stable time step.");
       prm.declare_entry("Mass scaling time step", "0", Patterns::Double(0.),
                         "Target time step for mass scaling (ms): elements "
                         "whose stable step is smaller get added density; the "
