@@ -6,7 +6,9 @@
 # history rows every 0.02 ms, and `Stop after rebound` (the run ends 1 ms after
 # the impactor has left the rubber; End time 60 ms is only a safety net).
 # Extra parameter lines can be appended through the environment variable
-# DROP_TEST_EXTRA_PRM. The log goes to OUTPUT_DIR/log.txt.
+# DROP_TEST_EXTRA_PRM. The log goes to OUTPUT_DIR/log.txt. The shipped file
+# is copied into case.prm (rubberdyn refuses 'include' lines); the lines
+# after it override its values.
 # With REUSE=1 a case is not run again if OUTPUT_DIR holds a finished run
 # (run_summary.json) of the very same case.prm, newer than the executable
 # and the shipped parameter file.
@@ -15,7 +17,7 @@ build=$(cd "$1" && pwd); mkdir -p "$2"; out=$(cd "$2" && pwd)
 mass=$3; velocity=$4; refinement=$5; ranks=${6:-1}
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 cat > "$out/case.prm.new" <<PRM
-include $repo/parameter_files/drop_test_cylinder.prm
+$(cat "$repo/parameter_files/drop_test_cylinder.prm")
 subsection Drop test
   set Impactor mass      = $mass
   set Impact velocity    = $velocity

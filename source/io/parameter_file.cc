@@ -271,6 +271,60 @@ namespace rubberdyn
           }
       }
 
+      /**
+       * Refuse an `include` line. ParameterHandler would open the named
+       * file itself (relative to the working directory) and parse it
+       * unchecked: no limit on its size or its lines (`include /dev/zero`
+       * reads until memory runs out), a file that includes itself
+       * recurses until the stack overflows, and messages about it name
+       * neither this file nor the line. The logical lines are rebuilt as
+       * ParameterHandler::parse_input() does (each physical line trimmed,
+       * a trailing backslash joins the next one without a space; the
+       * comment and tabs go before the keyword is looked for), so that no
+       * spelling of the directive slips through.
+       */
+      void
+      refuse_include_lines(const std::string &filename,
+                           const std::string &text,
+                           const FileLines   &file)
+      {
+        std::istringstream in(text);
+        std::string        raw, logical;
+        unsigned int       first_line = 1;
+        for (unsigned int n = 1; std::getline(in, raw); ++n)
+          {
+            if (logical.empty())
+              first_line = n;
+            std::string trimmed   = fold_whitespace(raw);
+            const bool  continued = !trimmed.empty() && trimmed.back() == '\\';
+            if (continued)
+              trimmed.pop_back();
+            logical += trimmed;
+            if (continued)
+              continue;
+            const std::string statement =
+              fold_whitespace(logical.substr(0, logical.find('#')));
+            logical.clear();
+            if (!starts_with(statement, "include ") &&
+                !starts_with(statement, "INCLUDE "))
+              continue;
+            const std::string path = file.path_at(first_line);
+            throw InputError(
+              filename,
+              "line " + std::to_string(first_line) + ", " +
+                (path.empty() ?
+                   std::string("at the top level") :
+                   "in subsection '" + path.substr(0, path.size() - 1) + "'") +
+                ": '" + abridged(statement) +
+                "' is not supported: rubberdyn reads the one parameter file "
+                "it is given, so that its limits on size and line length "
+                "apply to every line; copy the entries of the other file "
+                "into this one (later 'set' lines override earlier ones)");
+          }
+      }
+
+
+
       /** The part of @p text between @p begin and @p end. */
       std::string
       between(const std::string &text,
@@ -587,6 +641,7 @@ namespace rubberdyn
                            " bytes; is it a parameter file?");
       const FileLines file(text);
       check_line_lengths(filename, text, file);
+      refuse_include_lines(filename, text, file);
 
       std::istringstream stream(text);
       try

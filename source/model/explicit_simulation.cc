@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -451,8 +453,56 @@ namespace rubberdyn
                   std::pow(time_integration.mass_scaling_time_step / step, 2);
             }
         }
+      {
+        // The largest factor must be a number: the target step is at most
+        // the End time (TimeIntegration::parse_parameters()), but a target
+        // near a huge End time over a small element still overflows the
+        // square (1e300 ms over 3e-3 ms gives inf).
+        double largest = 1.;
+        for (const double factor : density_scaling)
+          largest = std::max(largest, factor);
+        parameter_tools::require_usable(
+          Utilities::MPI::max(largest, comm),
+          "Time integration/Mass scaling time step",
+          "the density factor (target step / stable step)^2 of the smallest "
+          "element",
+          "");
+      }
       element_forces =
         std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
+      {
+        // Refuse a run that could never end (End time = 1e308) before
+        // anything runs, in `--check` too. The step changes as the model
+        // deforms (contact and compression shrink it), so the count is an
+        // estimate; the limit is four orders above any real run.
+        const double first_step =
+          time_integration.time_step_scale * smallest_element_time_step();
+        // The solver's first step is at most first_step (contact can only
+        // shorten it): a Minimum time step above it stops every run at its
+        // first step, after writing the state.
+        if (time_integration.minimum_time_step > first_step)
+          throw InputError(
+            "Time integration/Minimum time step",
+            "is " +
+              parameter_tools::format_short(
+                time_integration.minimum_time_step) +
+              " ms, above the first stable time step of " +
+              parameter_tools::format_short(first_step) +
+              " ms: the run would stop at its first step");
+        const double n_steps = time_integration.end_time / first_step;
+        if (n_steps > parameters::TimeIntegration::max_time_steps)
+          throw InputError(
+            "Time integration/End time",
+            "is " + parameter_tools::format_short(time_integration.end_time) +
+              " ms: at the first stable time step of " +
+              parameter_tools::format_short(first_step) +
+              " ms the run would take " +
+              parameter_tools::format_short(n_steps) +
+              " steps, more than the limit of " +
+              parameter_tools::format_short(
+                parameters::TimeIntegration::max_time_steps) +
+              "; shorten the End time");
+      }
       added_mass_by_part = elements->mass_by_group(density_scaling);
       {
         const std::vector<double> physical = elements->mass_by_group(

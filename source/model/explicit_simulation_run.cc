@@ -157,6 +157,20 @@ namespace rubberdyn
 
 
 
+    double
+    ExplicitSimulation::smallest_element_time_step() const
+    {
+      const std::vector<double> steps = elements->reference_time_steps();
+      double smallest = std::numeric_limits<double>::max();
+      for (unsigned int e = 0; e < steps.size(); ++e)
+        smallest = std::min(smallest,
+                            steps[e] *
+                              std::sqrt(element_forces->density_scaling()[e]));
+      return Utilities::MPI::min(smallest, model.comm);
+    }
+
+
+
     void
     ExplicitSimulation::check(std::ostream &log)
     {
@@ -165,13 +179,7 @@ namespace rubberdyn
       // advancing (a run to t = 0 evaluates nothing), so estimate it by
       // one step on a copy is not possible; report the elements' reference
       // steps instead.
-      const std::vector<double> steps = elements->reference_time_steps();
-      double smallest = std::numeric_limits<double>::max();
-      for (unsigned int e = 0; e < steps.size(); ++e)
-        smallest = std::min(smallest,
-                            steps[e] *
-                              std::sqrt(element_forces->density_scaling()[e]));
-      smallest = Utilities::MPI::min(smallest, model.comm);
+      const double smallest = smallest_element_time_step();
       if (Utilities::MPI::this_mpi_process(model.comm) == 0)
         log << "  Smallest element time step " << smallest
             << " ms (reference configuration, before the scale factor "

@@ -121,6 +121,15 @@ namespace rubberdyn
       model_parameters_text(const dealii::ParameterHandler &prm);
 
     private:
+      /**
+       * The smallest stable step of the elements in the reference
+       * configuration, with the mass scaling's added density, before the
+       * scale factor (ms, the same on all ranks; collective). The largest
+       * double if there are no deformable elements.
+       */
+      double
+      smallest_element_time_step() const;
+
       /** Log the model's header lines. */
       void
       log_model(std::ostream &log) const;

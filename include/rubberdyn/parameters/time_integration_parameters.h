@@ -27,6 +27,17 @@ namespace rubberdyn
      */
     struct TimeIntegration
     {
+      /**
+       * The most time steps a run may take: End time divided by the first
+       * stable step (the smallest element step of the reference
+       * configuration, with mass scaling, times the scale factor) must not
+       * exceed it. It refuses an absurd End time (1e308 ms would run
+       * forever) before anything runs, in `--check` too; the largest
+       * shipped runs take about 5e4 steps, and 1e9 steps of even an 80-cell
+       * model take days.
+       */
+      static constexpr double max_time_steps = 1e9;
+
       /** `Scheme`: only "explicit" for now. */
       std::string scheme = "explicit";
       /** Simulated time (ms). */
@@ -49,7 +60,8 @@ namespace rubberdyn
       /**
        * Read them back (from the top level of @p prm).
        *
-       * @throws InputError naming the entry if a value is out of range.
+       * @throws InputError naming the entry if a value is out of range, or
+       *   if the Mass scaling time step is larger than the End time.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);
