@@ -45,6 +45,31 @@ namespace fixtures
                                                 1.1e-6);
   }
 
+  /** A part @p name of material id @p id made of rubber_law(). */
+  inline model::Part
+  rubber_part(const std::string &name, const types::material_id id)
+  {
+    model::Part part;
+    part.name         = name;
+    part.material_ids = {id};
+    part.law          = rubber_law();
+    return part;
+  }
+
+  /**
+   * A part @p name of material id @p id made of the examples' steel
+   * (Elastic, E = 210 GPa, nu = 0.3, 7.85e-6 kg/mm^3).
+   */
+  inline model::Part
+  steel_part(const std::string &name, const types::material_id id)
+  {
+    model::Part part;
+    part.name         = name;
+    part.material_ids = {id};
+    part.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
+    return part;
+  }
+
   /**
    * parameter_files/bonded_block.prm: meshes/bonded_block.msh (rubber,
    * volume 1, bonded to a steel plate, volume 2, on top), parts `rubber`
@@ -59,15 +84,8 @@ namespace fixtures
     io::read_gmsh_mesh(model.triangulation,
                        mesh_directory() + "bonded_block.msh",
                        "Mesh/Mesh file");
-    model::Part rubber, steel;
-    rubber.name         = "rubber";
-    rubber.material_ids = {1};
-    rubber.law          = rubber_law();
-    steel.name          = "steel";
-    steel.material_ids  = {2};
-    steel.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
-    model.parts.push_back(std::move(rubber));
-    model.parts.push_back(std::move(steel));
+    model.parts.push_back(rubber_part("rubber", 1));
+    model.parts.push_back(steel_part("steel", 2));
     model::BoundaryCondition base, press;
     base.name          = "base";
     base.boundary_ids  = {1};
@@ -106,17 +124,11 @@ namespace fixtures
     io::read_gmsh_mesh(model.triangulation,
                        mesh_directory() + "rigid_drop.msh",
                        "Mesh/Mesh file");
-    model::Part rubber, block;
-    rubber.name         = "rubber";
-    rubber.material_ids = {1};
-    rubber.law          = rubber_law();
-    block.name          = "block";
-    block.material_ids  = {2};
-    block.rigid         = true;
-    block.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
+    model::Part block              = steel_part("block", 2);
+    block.rigid                    = true;
     block.initial_velocity         = velocity;
     block.initial_angular_velocity = angular_velocity;
-    model.parts.push_back(std::move(rubber));
+    model.parts.push_back(rubber_part("rubber", 1));
     model.parts.push_back(std::move(block));
     model::BoundaryCondition floor;
     floor.name         = "floor";
