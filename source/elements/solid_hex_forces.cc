@@ -192,11 +192,10 @@ namespace rubberdyn
             volume += J[q] * JxW;
             max_wave_speed = max(max_wave_speed, load(&wave_speed[q * L]));
           }
-        Lanes x[n_nodes][3];
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          for (unsigned int d = 0; d < 3; ++d)
-            x[a][d] = load(block.X[a][d]) + ue[a][d];
-        const Lanes length = characteristic_length(x, volume);
+        // l of the bound omega_max <= 2 c / l with the current g0
+        // (hex_lanes.h; doc/theory.md section 8.3).
+        const Lanes length =
+          characteristic_length(g0, block.inverse_mass_fraction);
         const Lanes scaling = load(density_scaling);
         const Lanes c       = max_wave_speed / sqrt(scaling);
         // Compression rate (positive in compression, else 0); Q and the
