@@ -242,7 +242,8 @@ namespace rubberdyn
      * is added at every Gauss point; the power of the force it gives is
      * reported. The stable step of an element is $\Delta t_e = l / (Q +
      * \sqrt{Q^2 + c^2})$, $Q = C_l c + C_q l |\dot\varepsilon_v|$ in
-     * compression, $c$ the largest current
+     * compression (in the step only from $|\dot\varepsilon_v|\, l / c =
+     * 10^{-10}$ on, above the round-off of a rigid motion), $c$ the largest current
      * dilatational wave speed of its Gauss points, with the stiffness of the
      * F-bar stabilisation added, and
      * @f[
