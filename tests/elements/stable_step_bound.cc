@@ -64,12 +64,11 @@ namespace
                                       {2, 3, 6, 7},
                                       {0, 1, 2, 3},
                                       {4, 5, 6, 7}};
-    double             largest  = 0.;
+    double             largest     = 0.;
     for (const auto &f : faces)
-      largest = std::max(largest,
-                         0.5 * cross_product_3d(x[f[3]] - x[f[0]],
-                                                x[f[2]] - x[f[1]])
-                                 .norm());
+      largest = std::max(
+        largest,
+        0.5 * cross_product_3d(x[f[3]] - x[f[0]], x[f[2]] - x[f[1]]).norm());
     return volume / largest;
   }
 } // namespace
@@ -186,7 +185,8 @@ main(int argc, char **argv)
           dof_handler.distribute_dofs(fe);
           const auto partitioner =
             std::make_shared<Utilities::MPI::Partitioner>(
-              dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
+              dof_handler.locally_owned_dofs(),
+              MPI_COMM_SELF);
           elements::ElementSettings settings;
           settings.fbar_stabilization = element.stabilization;
           elements::SolidHexElements hexes;
@@ -205,9 +205,9 @@ main(int argc, char **argv)
           LAPACKFullMatrix<double>    A(24, 24);
           for (unsigned int j = 0; j < 24; ++j)
             {
-              f_plus = 0.;
+              f_plus  = 0.;
               f_minus = 0.;
-              u[j]   = delta;
+              u[j]    = delta;
               hexes.compute_forces(u, v, {1.}, f_plus, result);
               u[j] = -delta;
               hexes.compute_forces(u, v, {1.}, f_minus, result);
@@ -228,7 +228,7 @@ main(int argc, char **argv)
           const double critical = 2. / std::sqrt(largest);
 
           // The reported step at rest (no bulk viscosity without a rate).
-          u = 0.;
+          u      = 0.;
           f_plus = 0.;
           hexes.compute_forces(u, v, {1.}, f_plus, result);
           const double step = result.min_time_step;

@@ -54,7 +54,8 @@ main(int argc, char **argv)
   DoFHandler<3>     dof_handler(tria);
   dof_handler.distribute_dofs(fe);
   const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
+    dof_handler.locally_owned_dofs(),
+    MPI_COMM_SELF);
 
   elements::SolidHexElements hexes;
   hexes.initialize(dof_handler,
@@ -86,15 +87,19 @@ main(int argc, char **argv)
       plane_x.point  = Point<3>(state.d_x, 0., 0.);
       plane_x.normal = Tensor<1, 3>({1., 0., 0.});
       contact::RigidSurfaceContact contact;
-      contact.initialize(
-        dof_handler, partitioner, {0, 4}, bulk_modulus, s, {plane_z, plane_x});
-      VectorType u(partitioner), f(partitioner);
+      contact.initialize(dof_handler,
+                         partitioner,
+                         {0, 4},
+                         bulk_modulus,
+                         s,
+                         {plane_z, plane_x});
+      VectorType             u(partitioner), f(partitioner);
       contact::ContactResult result;
       contact.add_forces(u, {Tensor<1, 3>(), Tensor<1, 3>()}, f, result);
       const double step  = contact.stable_time_step(mass);
       const double error = std::abs(step - state.expected) / state.expected;
-      out() << state.name << ": contact step " << std::setprecision(8)
-            << step << " ms, closed form " << state.expected
+      out() << state.name << ": contact step " << std::setprecision(8) << step
+            << " ms, closed form " << state.expected
             << " ms, relative error below 1e-14: "
             << (error <= 1e-14 ? "yes" : "no") << std::endl;
       check(error <= 1e-14,

@@ -225,8 +225,8 @@ main(int argc, char **argv)
                                            output,
                                            "Stable step energy",
                                            "stable step energy");
-      auto            plugin   = std::make_unique<EnergyRecorder>();
-      EnergyRecorder &recorder = *plugin;
+      auto                      plugin   = std::make_unique<EnergyRecorder>();
+      EnergyRecorder           &recorder = *plugin;
       simulation.add_standard_postprocessors();
       simulation.add_postprocessor(std::move(plugin));
       std::ostringstream log;
@@ -245,10 +245,10 @@ main(int argc, char **argv)
       for (const double E : recorder.energies)
         finite &= std::isfinite(E);
       // The impacts: the block must have left the plane by mid-run.
-      const bool left = recorder.left > 0 &&
-                        recorder.left < recorder.energies.size() / 2;
-      const double E_ref = left ? recorder.energies[recorder.left] : E0;
-      double growth = 0.;
+      const bool left =
+        recorder.left > 0 && recorder.left < recorder.energies.size() / 2;
+      const double E_ref  = left ? recorder.energies[recorder.left] : E0;
+      double       growth = 0.;
       for (std::size_t i = recorder.left; i < recorder.energies.size(); ++i)
         growth = std::max(growth, recorder.energies[i] / E_ref - 1.);
       const double jump = E_ref / E0 - 1.;
@@ -262,8 +262,7 @@ main(int argc, char **argv)
       std::cerr << test_case.name << ": " << recorder.steps
                 << " steps, largest E / E_ref - 1 = " << growth
                 << ", E_ref / E_0 - 1 = " << jump
-                << (failure.empty() ? "" : ", failed: " + failure)
-                << std::endl;
+                << (failure.empty() ? "" : ", failed: " + failure) << std::endl;
       if (!failure.empty())
         failures += test_case.name + ": the run failed: " + failure + "; ";
       else if (test_case.penalty_scale > 0. && !left)
@@ -273,8 +272,8 @@ main(int argc, char **argv)
       else if (growth > bound)
         failures += test_case.name + ": the energy grew by " +
                     testing::sci(growth) + " of E_ref (bound 2e-2); ";
-      else if (test_case.penalty_scale > 0. &&
-               test_case.penalty_scale <= 0.1 && jump > bound)
+      else if (test_case.penalty_scale > 0. && test_case.penalty_scale <= 0.1 &&
+               jump > bound)
         failures += test_case.name + ": the impact changed the energy by " +
                     testing::sci(jump) + " (bound 2e-2); ";
     }

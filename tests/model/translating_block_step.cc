@@ -120,8 +120,8 @@ main(int argc, char **argv)
                                            output,
                                            "Translating block",
                                            "translating block");
-      auto          plugin   = std::make_unique<StepRecorder>();
-      StepRecorder &recorder = *plugin;
+      auto                      plugin   = std::make_unique<StepRecorder>();
+      StepRecorder             &recorder = *plugin;
       simulation.add_standard_postprocessors();
       simulation.add_postprocessor(std::move(plugin));
       std::ostringstream log;
@@ -129,17 +129,17 @@ main(int argc, char **argv)
 
       const auto [smallest, largest] =
         std::minmax_element(recorder.steps.begin(), recorder.steps.end());
-      const double first  = recorder.steps.front();
-      const double spread = std::max(first - *smallest, *largest - first) /
-                            first;
+      const double first = recorder.steps.front();
+      const double spread =
+        std::max(first - *smallest, *largest - first) / first;
       const std::string name =
         formulation == elements::Formulation::fbar ? "F-bar" : "displacement";
       out() << name << ": " << recorder.steps.size()
             << " steps, all equal to the first to 1e-12: "
             << (spread <= 1e-12 ? "yes" : "no") << std::endl;
       std::cerr << name << ": first step " << first << " ms, smallest "
-                << *smallest << ", largest " << *largest
-                << ", relative spread " << spread << std::endl;
+                << *smallest << ", largest " << *largest << ", relative spread "
+                << spread << std::endl;
       check(spread <= 1e-12,
             name + ": the step of a translating block varies by " +
               sci(spread) + " (bound 1e-12)");
