@@ -192,35 +192,28 @@ namespace rubberdyn
         G[2][2]         = s * (F[0][0] * F[1][1] - F[0][1] * F[1][0]);
       }
 
-      // Volume / largest face area of hexahedra with nodes x (deal.II's
-      // lexicographic vertex order). The area of a planar or warped face
-      // is taken as half the norm of the cross product of its diagonals.
+      // Length l of the element step Delta t = l / c (doc/theory.md,
+      // section 8.3): the bound of Flanagan and Belytschko (IJNME 17
+      // (1981) 679-706) on the largest frequency of a hexahedron with
+      // lumped mass, generalised to nodal masses m_a = mu_a M (M the
+      // element's mass),
+      //   omega_max^2 <= c^2 sum_a |g0_a|^2 / mu_a = (2 c / l)^2,
+      //   l = 2 / sqrt(sum_a |g0_a|^2 / mu_a),
+      // with g0_a the gradient of N_a at the centre in the configuration
+      // the wave speed c is measured in, and inverse_mass_fraction[a] =
+      // 1 / mu_a. For a parallelepiped (mu_a = 1/8) l = V / sqrt(A_1^2 +
+      // A_2^2 + A_3^2) with A_i the areas of its three face pairs: h / sqrt3
+      // for a cube of side h, whose breathing mode attains the bound.
       inline Lanes
-      characteristic_length(const Lanes x[n_nodes][3], const Lanes &volume)
+      characteristic_length(const Lanes  g0[n_nodes][3],
+                            const double inverse_mass_fraction[n_nodes][L])
       {
-        // Faces as (v0, v1, v2, v3) with diagonals v0-v3 and v1-v2.
-        constexpr unsigned int faces[6][4] = {{0, 2, 4, 6},
-                                              {1, 3, 5, 7},
-                                              {0, 1, 4, 5},
-                                              {2, 3, 6, 7},
-                                              {0, 1, 2, 3},
-                                              {4, 5, 6, 7}};
-        Lanes max_area_square = {};
-        for (const auto &face : faces)
-          {
-            Lanes d1[3], d2[3];
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                d1[i] = x[face[3]][i] - x[face[0]][i];
-                d2[i] = x[face[2]][i] - x[face[1]][i];
-              }
-            const Lanes c0  = d1[1] * d2[2] - d1[2] * d2[1];
-            const Lanes c1  = d1[2] * d2[0] - d1[0] * d2[2];
-            const Lanes c2  = d1[0] * d2[1] - d1[1] * d2[0];
-            max_area_square = max(max_area_square,
-                                  0.25 * (c0 * c0 + c1 * c1 + c2 * c2));
-          }
-        return volume / sqrt(max_area_square);
+        Lanes sum = {};
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          sum += load(inverse_mass_fraction[a]) *
+                 (g0[a][0] * g0[a][0] + g0[a][1] * g0[a][1] +
+                  g0[a][2] * g0[a][2]);
+        return 2. / sqrt(sum);
       }
 
       // x^(-1/3) per lane, as simd_math::inverse_cube_root.

@@ -149,6 +149,17 @@ namespace rubberdyn
                 for (unsigned int a = 0; a < n_nodes; ++a)
                   for (unsigned int k = 0; k < 3; ++k)
                     block.X[a][k][l] = cell->vertex(a)[k];
+                // V / int N_a dV, with the integral of add_lumped_mass().
+                double volume = 0.;
+                for (unsigned int q = 0; q < n_q; ++q)
+                  volume += block.JxW[q][l];
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    double integral = 0.;
+                    for (unsigned int q = 0; q < n_q; ++q)
+                      integral += reference.values[q][a] * block.JxW[q][l];
+                    block.inverse_mass_fraction[a][l] = volume / integral;
+                  }
                 if (l < block.n_active)
                   {
                     block.element[l] = elements.size();
@@ -245,14 +256,19 @@ namespace rubberdyn
       std::vector<double> steps(elements.size());
       for (const internal::HexBlock &block : blocks)
         {
-          lanes_of::Lanes volume = {}, X[n_nodes][3];
-          for (unsigned int q = 0; q < n_q; ++q)
-            volume += lanes_of::load(block.JxW[q]);
+          // g0_a = grad_X N_a at the centre = (dxi/dX)^T dN_a/dxi.
+          lanes_of::Lanes g0[n_nodes][3];
           for (unsigned int a = 0; a < n_nodes; ++a)
             for (unsigned int d = 0; d < 3; ++d)
-              X[a][d] = lanes_of::load(block.X[a][d]);
+              g0[a][d] =
+                lanes_of::load(block.inverse_jacobian_centre[0][d]) *
+                  reference.centre[a][0] +
+                lanes_of::load(block.inverse_jacobian_centre[1][d]) *
+                  reference.centre[a][1] +
+                lanes_of::load(block.inverse_jacobian_centre[2][d]) *
+                  reference.centre[a][2];
           const lanes_of::Lanes length =
-            lanes_of::characteristic_length(X, volume);
+            lanes_of::characteristic_length(g0, block.inverse_mass_fraction);
           // The F-bar stabilisation adds kappa / r_c to the longitudinal
           // modulus rho_0 c^2, as in the force kernel (doc/theory.md
           // section 8.3; r = 1 without a collapse check).

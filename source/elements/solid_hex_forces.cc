@@ -192,11 +192,10 @@ namespace rubberdyn
             volume += J[q] * JxW;
             max_wave_speed = max(max_wave_speed, load(&wave_speed[q * L]));
           }
-        Lanes x[n_nodes][3];
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          for (unsigned int d = 0; d < 3; ++d)
-            x[a][d] = load(block.X[a][d]) + ue[a][d];
-        const Lanes length = characteristic_length(x, volume);
+        // l of the bound omega_max <= 2 c / l with the current g0
+        // (hex_lanes.h; doc/theory.md section 8.3).
+        const Lanes length =
+          characteristic_length(g0, block.inverse_mass_fraction);
         const Lanes scaling = load(density_scaling);
         const Lanes c       = max_wave_speed / sqrt(scaling);
         // Compression rate (positive in compression, else 0); Q and the
@@ -242,7 +241,18 @@ namespace rubberdyn
                                          min_ratio)));
             }
         store(element_energy, result.energy);
-        store(length / (Q + sqrt(Q * Q + step_wave_speed * step_wave_speed)),
+        // The step counts a compression rate only from 1e-10 of the
+        // element's frequency scale c / l on: the round-off of a rigid
+        // motion's div v, about 1e-16 |v| / l (1e-17 1/ms seen in a falling
+        // block), would otherwise switch Q on and the step down by C_l =
+        // 6 % at random. Below it the viscous pressure (kept: it is
+        // continuous in the rate, so that mirror-image elements stay
+        // mirror images) is below 1e-10 C_l rho c^2, and a mode that grew
+        // under the undamped step would be caught at that amplitude.
+        const Lanes Q_step =
+          rate * length > 1e-10 * c ? Q : broadcast(0.);
+        store(length / (Q_step + sqrt(Q_step * Q_step +
+                                      step_wave_speed * step_wave_speed)),
               result.time_step);
 
         // Power of the viscous force actually applied, sum_a f_a . v_a. Its

@@ -16,9 +16,10 @@
 // 2. Closed form (LS-DYNA theory manual, bulk viscosity; doc/theory.md
 //    8.3-8.4): a cube of side h at rest in its reference configuration
 //    under the homogeneous velocity v = -e z e_z (volumetric strain rate
-//    -e, compression) dissipates P = rho l Q e^2 V with l = h (volume over
-//    largest face area), V = h^3, Q = C_l c + C_q l e and c the
-//    reference wave speed; its stable step is l / (Q + sqrt(Q^2 + c^2)).
+//    -e, compression) dissipates P = rho l Q e^2 V with l = h / sqrt3 (the
+//    stable-step length, doc/theory.md 8.3), V = h^3, Q = C_l c + C_q l e
+//    and c the reference wave speed; its stable step is
+//    l / (Q + sqrt(Q^2 + c^2)).
 //    Under v = +e z e_z (expansion) there is no bulk viscosity: P = 0 and
 //    the step is l / c. Both formulations, to 1e-12.
 #include <deal.II/base/mpi.h>
@@ -154,7 +155,7 @@ main(int argc, char **argv)
       dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
 
     const double rho = rubber.density(), c = rubber.reference_wave_speed();
-    const double l = h, V = h * h * h;
+    const double l = h / std::sqrt(3.), V = h * h * h;
     const double Q = C_l * c + C_q * l * e;
     const double P_exact    = rho * l * Q * e * e * V;
     const double step_exact = l / (Q + std::sqrt(Q * Q + c * c));

@@ -5,8 +5,9 @@
 // accepts.
 //
 // 1. Closed form: a 2 mm cube at rest has the step
-//    l / sqrt(c^2 + beta K / (rho r_c)), l = 2 mm, c the reference wave
-//    speed, in a force evaluation and in reference_time_steps() (1e-12).
+//    l / sqrt(c^2 + beta K / (rho r_c)), l = 2 / sqrt3 mm (doc/theory.md
+//    section 8.3), c the reference wave speed, in a force evaluation and
+//    in reference_time_steps() (1e-12).
 // 2. Time integration at scale 1.0 (the step re-evaluated every step, as
 //    the explicit solver does): a 3 x 3 x 3 patch of distorted 2 mm
 //    hexahedra of the shipped rubber (nu = 0.499), compressed to 80 % of
@@ -20,10 +21,8 @@
 //    oscillate by a few per cent, an unstable step grows without bound).
 //    Before the stabilisation entered the step, beta = 1 grew the energy
 //    610-fold and an element inverted at step 5340.
-// (A single free element is no test of the step: its nodes carry an eighth
-// of its mass each, and its uniform dilatation has omega = 2 sqrt(3) c / h,
-// above the 2 c / l the element step assumes; it is unstable at scale 1.0
-// with or without stabilisation.)
+// (tests/elements/stable_step_bound checks single free elements against
+// the largest eigenvalue of their tangent.)
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -82,8 +81,9 @@ main(int argc, char **argv)
         hexes.compute_forces(u, v, {1.}, f, result);
         const double c = rubber.reference_wave_speed();
         const double exact =
-          2. / std::sqrt(c * c + beta * K / (rubber.density() *
-                                             settings.fbar_collapse_ratio));
+          2. / std::sqrt(3.) /
+          std::sqrt(c * c + beta * K / (rubber.density() *
+                                        settings.fbar_collapse_ratio));
         const double error =
           std::max(std::abs(result.min_time_step - exact),
                    std::abs(hexes.reference_time_steps()[0] - exact)) /
@@ -91,7 +91,7 @@ main(int argc, char **argv)
         worst = std::max(worst, error);
         out() << "cube at rest, beta " << beta << ": step "
               << std::setprecision(6) << exact << " ms = "
-              << exact * c / 2. << " l/c" << std::endl;
+              << exact * c * std::sqrt(3.) / 2. << " l/c" << std::endl;
       }
     std::cerr << "closed form: largest relative error " << sci(worst)
               << std::endl;

@@ -1,9 +1,11 @@
 // Stable time step of single hexahedra against the closed form
-// dt = l / c, l = volume / largest face area, c = sqrt((K + 4G/3) / rho)
-// (reference study eq. 2.12 without the 0.9 factor), for a cube, a brick
-// and a skewed parallelepiped, whose volumes and face areas follow from
-// the edge vectors a, b, c: V = |a . (b x c)|, faces |a x b|, |b x c|,
-// |c x a|. Both the reference-configuration estimate (used for mass
+// dt = l / c, c = sqrt((K + 4G/3) / rho), with the length of the bound of
+// Flanagan and Belytschko (doc/theory.md section 8.3), which for a
+// parallelepiped with edge vectors a, b, c is l = V / sqrt(|a x b|^2 +
+// |b x c|^2 + |c x a|^2), V = |a . (b x c)| (its centre gradients are the
+// dual basis b x c / V etc. divided by 4, and every node carries an eighth
+// of the mass), for a cube (l = h / sqrt3), a brick and a skewed
+// parallelepiped. Both the reference-configuration estimate (used for mass
 // scaling) and the one of a force evaluation at rest (no bulk viscosity
 // without a volume rate) must agree with it to 1e-12 relative.
 #include <deal.II/base/mpi.h>
@@ -59,10 +61,10 @@ main(int argc, char **argv)
         dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
 
       const double volume = std::abs(a * cross_product_3d(b, d));
-      const double max_area = std::max({cross_product_3d(a, b).norm(),
-                                        cross_product_3d(b, d).norm(),
-                                        cross_product_3d(d, a).norm()});
-      const double exact = volume / max_area / c;
+      const double areas = std::sqrt(cross_product_3d(a, b).norm_square() +
+                                     cross_product_3d(b, d).norm_square() +
+                                     cross_product_3d(d, a).norm_square());
+      const double exact = volume / areas / c;
 
       rubberdyn::elements::SolidHexElements elements;
       elements.initialize(dof_handler, partitioner, {{{0}, &steel, rubberdyn::elements::Formulation::fbar}}, {});

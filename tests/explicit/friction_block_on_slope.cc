@@ -4,9 +4,9 @@
 // 1. Slip: an elastic block on a fixed rigid plane under gravity tilted by
 //    theta = 30 degrees from the plane's normal (a block on a 30-degree
 //    slope), mu = 0.3 < tan(theta): it slides with a = g (sin(theta) - mu
-//    cos(theta)) = 0.2402 g; checked within 2 % from the mean velocity of
-//    the nodes between t = 1 and 3 ms. The energy balance with the friction
-//    work holds to 1 %.
+//    cos(theta)) = 0.2402 g; checked within 2 % from the least-squares
+//    slope of the nodes' mean x velocity, sampled every step from t = 1 to
+//    3 ms. The energy balance with the friction work holds to 1 %.
 // 2. Slip, then stick: the block at rest on a conveyor (a rigid plane of
 //    huge mass moving tangentially at V = 0.5 mm/ms), gravity normal to it,
 //    mu = 0.3: friction accelerates it at mu g until it moves with the
@@ -22,7 +22,10 @@
 // The block starts touching the plane without load, so it bounces on the
 // normal penalty springs (nothing damps them): the normal force
 // oscillates around m g, which is why the checks use mean velocities over
-// many bounce periods.
+// many bounce periods. (The accelerations were once the difference of two
+// samples, at 1 and 3 ms, each at the mercy of the bounce phase: about
+// +-1 % each: the smaller stable step of 2026-12-01 moved the tube's from
+// +0.8 % to -2.1 %. The fitted slopes are within 0.5 % for all three.)
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -60,6 +63,8 @@ namespace
   struct Run
   {
     double velocity_1, time_1, velocity_2, time_2;
+    /** Least-squares slope of the mean velocity over [time_1, time_2]. */
+    double acceleration;
     double displacement;
     double energy_error;
     double friction_work;
@@ -146,7 +151,26 @@ namespace
     solver.run(time_1, []() {});
     result.velocity_1 = mean(solver.velocity());
     result.time_1     = solver.time() - 0.5 * solver.time_step();
-    solver.run(time_2, []() {});
+    // Samples (t, mean v) of every step from time_1 to time_2.
+    std::vector<std::pair<double, double>> samples = {
+      {result.time_1, result.velocity_1}};
+    solver.run(time_2, [&]() {
+      samples.emplace_back(solver.time() - 0.5 * solver.time_step(),
+                           mean(solver.velocity()));
+    });
+    double t_mean = 0., v_mean = 0.;
+    for (const auto &[t, v] : samples)
+      {
+        t_mean += t / samples.size();
+        v_mean += v / samples.size();
+      }
+    double covariance = 0., variance = 0.;
+    for (const auto &[t, v] : samples)
+      {
+        covariance += (t - t_mean) * (v - v_mean);
+        variance += (t - t_mean) * (t - t_mean);
+      }
+    result.acceleration  = covariance / variance;
     result.velocity_2    = mean(solver.velocity());
     result.time_2        = solver.time() - 0.5 * solver.time_step();
     result.displacement  = mean(solver.displacement());
@@ -169,8 +193,7 @@ main(int argc, char **argv)
                                       mu};
   const Tensor<1, 3> slope_gravity({g * std::sin(theta), 0., -g * std::cos(theta)});
   const Run slope = run_block(plane, slope_gravity, 0., 1., 3., comm);
-  const double slope_acceleration =
-    (slope.velocity_2 - slope.velocity_1) / (slope.time_2 - slope.time_1);
+  const double slope_acceleration = slope.acceleration;
   const double expected = g * (std::sin(theta) - mu * std::cos(theta));
   const double slope_error = std::abs(slope_acceleration / expected - 1.);
   out() << std::setprecision(4) << "slope: acceleration " << slope_acceleration
@@ -205,8 +228,7 @@ main(int argc, char **argv)
          {"pin", pin}, {"tube", tube}})
     {
       const Run    run = run_block(surface, slope_gravity, 0., 1., 3., comm);
-      const double a   = (run.velocity_2 - run.velocity_1) /
-                       (run.time_2 - run.time_1);
+      const double a   = run.acceleration;
       const double error = std::abs(a / expected - 1.);
       cylinder_error     = std::max(cylinder_error, error);
       out() << name << " of radius " << R << " mm: acceleration " << a

@@ -75,6 +75,13 @@ namespace rubberdyn
         double JxW[n_q][lanes];
         /** Reference nodal coordinates (mm). */
         double X[n_nodes][3][lanes];
+        /**
+         * Element volume over node a's share of the lumped mass,
+         * $V / \int N_a\,dV$ (reference configuration; 8 for a
+         * parallelepiped), [a]: the weights of the stable-step length
+         * (doc/theory.md section 8.3).
+         */
+        double inverse_mass_fraction[n_nodes][lanes];
         /** Index of each lane's element in the element numbering. */
         unsigned int element[lanes];
         /** Number of lanes in use. */
@@ -235,10 +242,18 @@ namespace rubberdyn
      * is added at every Gauss point; the power of the force it gives is
      * reported. The stable step of an element is $\Delta t_e = l / (Q +
      * \sqrt{Q^2 + c^2})$, $Q = C_l c + C_q l |\dot\varepsilon_v|$ in
-     * compression, $l$ = volume / largest face area (current configuration),
-     * $c$ the largest current dilatational wave speed of its Gauss points,
-     * with the stiffness of the F-bar stabilisation added (doc/theory.md
-     * sections 8.1, 8.3).
+     * compression (in the step only from $|\dot\varepsilon_v|\, l / c =
+     * 10^{-10}$ on, above the round-off of a rigid motion), $c$ the largest current
+     * dilatational wave speed of its Gauss points, with the stiffness of the
+     * F-bar stabilisation added, and
+     * @f[
+     *   l = 2 \Big/ \sqrt{\textstyle\sum_a |g^0_a|^2 / \mu_a},
+     * @f]
+     * $\mu_a = \int N_a\,dV / V$ the lumped-mass share of node a: the bound
+     * of Flanagan and Belytschko (IJNME 17 (1981) 679-706) on the element's
+     * largest frequency, $\omega_{max} \le 2c/l$, in the current
+     * configuration; $l = h/\sqrt3$ for a cube of side h (doc/theory.md
+     * sections 8.1, 8.3, 8.4).
      *
      * A model has several element groups (parts), each with its own law and
      * formulation; blocks never mix groups, and each block is evaluated with
@@ -292,9 +307,10 @@ namespace rubberdyn
       mass_by_group(const std::vector<double> &density_scaling) const;
 
       /**
-       * Stable time step of each element in the reference configuration,
-       * without bulk viscosity, with the F-bar stabilisation's stiffness
-       * (for mass scaling).
+       * Stable time step $l/c$ of each element in the reference
+       * configuration (the length of the class documentation), without bulk
+       * viscosity, with the F-bar stabilisation's stiffness (for mass
+       * scaling).
        */
       std::vector<double>
       reference_time_steps() const;
