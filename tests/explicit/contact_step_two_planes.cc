@@ -95,7 +95,7 @@ main(int argc, char **argv)
                          {plane_z, plane_x});
       VectorType             u(partitioner), f(partitioner);
       contact::ContactResult result;
-      contact.add_forces(u, {Tensor<1, 3>(), Tensor<1, 3>()}, f, result);
+      contact.add_forces(u, std::vector<contact::SurfacePose>(2), f, result);
       const double step  = contact.stable_time_step(mass);
       const double error = std::abs(step - state.expected) / state.expected;
       out() << state.name << ": contact step " << std::setprecision(8) << step
