@@ -40,8 +40,10 @@
 // s = 4 on the end nodes blow up off the wall; all of them run cleanly at
 // the scale 0.6. A rough estimate, 2 / sqrt((2 c / h)^2 + (2 / dt_pen)^2)
 // against the step 0.9 h / (1.06 c) taken (bulk viscosity's 1.06), leaves
-// 9 % of margin for s = 1, 2 % for s = 2 and none for s = 3. (Reported to
-// the solver: its contact step should combine the two.)
+// 9 % of margin for s = 1, 2 % for s = 2 and none for s = 3. (These
+// figures predate two changes: the solver now combines the two,
+// 1/dt^2 = 1/dt_e^2 + 1/dt_c^2, and the element step is Flanagan and
+// Belytschko's bound, doc/theory.md section 8.3.)
 //
 // The plateau force is the mean over the middle half of the measured
 // contact: that skips the penalty rise and the unloading and averages the

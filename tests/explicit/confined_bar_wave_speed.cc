@@ -20,13 +20,14 @@
 // (measured 5972 mm/ms against 5972 estimated at the step scale 0.5 used
 // below; 5975 at 0.9, and with s = 10, 5929 against 5921 at 0.9). Softer
 // walls are worse both ways: s = 3 would cost 4.5 % and is unstable at the
-// default time step scale, because the solver's step does
-// not combine a node's element and penalty stiffness (see
-// bar_wall_impact.cc); at s = 30 the penalty dominates the step, which
+// default time step scale, because the solver's step did
+// not combine a node's element and penalty stiffness when this was
+// measured (it does now; see bar_wall_impact.cc); at s = 30 the penalty dominates the step, which
 // the walls cut to about a fifth of the element step: this small mesh
 // affords that. The nodes of the pushed end's corners touch three planes
-// (the pusher and two walls), three springs in parallel, but the solver's
-// step assumes one per node (issue 11): at the default scale 0.9 the
+// (the pusher and two walls), three springs in parallel; the solver's
+// step assumed one per node then (it counts them now, tested by
+// explicit/contact_step_two_planes): at the default scale 0.9 the
 // corner elements go numerically unstable (their Gauss-point volume
 // ratios J_q/J_0 swing down to 0.22 at an axial strain of 1.7e-4, which the
 // elements' F-bar collapse check reports since it exists), so the step
