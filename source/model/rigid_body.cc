@@ -38,6 +38,15 @@ namespace rubberdyn
 
 
 
+    Tensor<2, 3>
+    RigidBody::rotation_after(const double step) const
+    {
+      return rotates() ? rotation_of_vector(step * angular_velocity) * rotation :
+                         rotation;
+    }
+
+
+
     Tensor<1, 3>
     rotation_vector(const Tensor<2, 3> &R)
     {

@@ -22,6 +22,7 @@
 #include <memory>
 #include <ostream>
 #include <set>
+#include <utility>
 
 namespace rubberdyn
 {
@@ -725,25 +726,19 @@ namespace rubberdyn
                                  "names no part ('" +
                                    definition.rigid_part.substr(0, 40) +
                                    "' is not in Parts/Names)");
-              for (const std::string entry : {"Mass", "Free directions",
-                                              "Initial velocity",
-                                              "Velocity function"})
-                {
-                  const std::string value = Utilities::trim(prm.get(entry));
-                  const std::string defaults[4] = {"0", "", "0, 0, 0",
-                                                   "0; 0; 0"};
-                  const std::string names[4]    = {"Mass", "Free directions",
-                                                "Initial velocity",
-                                                "Velocity function"};
-                  for (unsigned int k = 0; k < 4; ++k)
-                    if (names[k] == entry && value != defaults[k])
-                      throw InputError(path + "/" + entry,
-                                       "must stay at its default when the "
-                                       "surface is carried by the rigid "
-                                       "part '" +
-                                         definition.rigid_part +
-                                         "' (the part's motion applies)");
-                }
+              // The body's own motion entries, with their defaults.
+              const std::pair<const char *, const char *> own_motion[] = {
+                {"Mass", "0"},
+                {"Free directions", ""},
+                {"Initial velocity", "0, 0, 0"},
+                {"Velocity function", "0; 0; 0"}};
+              for (const auto &[entry, default_value] : own_motion)
+                if (Utilities::trim(prm.get(entry)) != default_value)
+                  throw InputError(path + "/" + entry,
+                                   "must stay at its default when the "
+                                   "surface is carried by the rigid part '" +
+                                     definition.rigid_part +
+                                     "' (the part's motion applies)");
             }
 
           model::RigidBody &body  = definition.body;

@@ -336,11 +336,7 @@ namespace rubberdyn
           // The pose at t_{n+1}: x = C + u + R (X - C).
           const Point<3> centre =
             body.current_reference_position() + step * body.velocity;
-          const Tensor<2, 3> rotation =
-            body.rotates() ?
-              model::rotation_of_vector(step * body.angular_velocity) *
-                body.rotation :
-              body.rotation;
+          const Tensor<2, 3> rotation = body.rotation_after(step);
           for (unsigned int n = 0; n < part.dofs.size(); ++n)
             {
               const Point<3> x_next =
@@ -1009,10 +1005,7 @@ namespace rubberdyn
             {
               const Tensor<1, 3> increment = new_step * body.velocity;
               body.displacement += increment;
-              if (body.rotates())
-                body.rotation =
-                  model::rotation_of_vector(new_step * body.angular_velocity) *
-                  body.rotation;
+              body.rotation = body.rotation_after(new_step);
               for (unsigned int d = 0; d < 3; ++d)
                 if (!body.moves_freely(d))
                   energy.external_work -= body.contact_force[d] * increment[d];

@@ -94,6 +94,13 @@ namespace rubberdyn
                (free_rotation[0] || free_rotation[1] || free_rotation[2]);
       }
 
+      /**
+       * The rotation after a step @p step (ms) with the current angular
+       * velocity: exp(step [w]x) R, or R for a body that does not rotate.
+       */
+      Tensor<2, 3>
+      rotation_after(const double step) const;
+
       /** The current position of the reference point (mm). */
       Point<3>
       current_reference_position() const
