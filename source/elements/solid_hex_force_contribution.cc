@@ -45,8 +45,12 @@ namespace rubberdyn
       for (unsigned int g = 0; g < step_result.internal_energy_by_group.size() &&
                                g < results.internal_energy_by_group.size();
            ++g)
-        results.internal_energy_by_group[g] +=
-          step_result.internal_energy_by_group[g];
+        {
+          results.internal_energy_by_group[g] +=
+            step_result.internal_energy_by_group[g];
+          results.bulk_viscosity_power_by_group[g] +=
+            step_result.bulk_viscosity_power_by_group[g];
+        }
       results.bulk_viscosity_power += step_result.bulk_viscosity_power;
       results.element_time_step =
         std::min(results.element_time_step, step_result.min_time_step);

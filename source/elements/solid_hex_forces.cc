@@ -408,6 +408,7 @@ namespace rubberdyn
       result.internal_energy = 0.;
       result.internal_energy_by_group.assign(groups.size(), 0.);
       result.bulk_viscosity_power = 0.;
+      result.bulk_viscosity_power_by_group.assign(groups.size(), 0.);
       result.min_time_step        = std::numeric_limits<double>::max();
       result.min_volume_ratio     = 1.;
       result.failure.failed       = false;
@@ -467,13 +468,14 @@ namespace rubberdyn
               continue;
             }
 
-          double group_energy = 0.;
+          double group_energy = 0., group_viscous_power = 0.;
           for (unsigned int l = 0; l < block.n_active; ++l)
             {
               result.internal_energy += block_result.energy[l];
               group_energy += block_result.energy[l];
               result.bulk_viscosity_power +=
                 block_result.bulk_viscosity_power[l];
+              group_viscous_power += block_result.bulk_viscosity_power[l];
               result.min_time_step =
                 std::min(result.min_time_step, block_result.time_step[l]);
               for (unsigned int a = 0; a < n_nodes; ++a)
@@ -481,6 +483,8 @@ namespace rubberdyn
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];
             }
           result.internal_energy_by_group[block.group] += group_energy;
+          result.bulk_viscosity_power_by_group[block.group] +=
+            group_viscous_power;
         }
     }
   } // namespace elements

@@ -772,15 +772,7 @@ namespace rubberdyn
       add_postprocessor(std::make_unique<postprocess::PartColumns>(names));
       // The bodies in their order: rigid surfaces with their own body, then
       // the rigid parts (with their rotation).
-      names.clear();
-      std::vector<bool> rotating;
-      for (const RigidBody &body : bodies)
-        {
-          names.push_back(body.name);
-          rotating.push_back(body.carries_nodes);
-        }
-      add_postprocessor(
-        std::make_unique<postprocess::RigidBodyColumns>(names, rotating));
+      add_postprocessor(std::make_unique<postprocess::RigidBodyColumns>(bodies));
       std::vector<const contact::RigidSurfaceForces *> surfaces;
       for (const auto &surface : contact_forces)
         surfaces.push_back(surface.get());

@@ -14,6 +14,7 @@ namespace rubberdyn
       internal_energy_by_group.assign(n_groups, 0.);
       contact_energy       = 0.;
       bulk_viscosity_power = 0.;
+      bulk_viscosity_power_by_group.assign(n_groups, 0.);
       friction_dissipation = 0.;
       external_work        = 0.;
       element_time_step    = std::numeric_limits<double>::max();

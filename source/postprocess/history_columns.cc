@@ -154,6 +154,8 @@ namespace rubberdyn
         {
           columns.push_back(part + "_kinetic_energy");
           columns.push_back(part + "_internal_energy");
+          columns.push_back(part + "_bulk_viscosity_work");
+          columns.push_back(part + "_gravity_work");
           add_vector_columns(part + "_momentum", columns);
         }
       return columns;
@@ -167,10 +169,13 @@ namespace rubberdyn
     {
       const auto &motion   = view.solver.motion_by_group();
       const auto &internal = view.solver.internal_energy_by_group();
+      const auto &work     = view.solver.work_by_group();
       for (unsigned int p = 0; p < part_names.size(); ++p)
         {
           values.push_back(motion[p].kinetic_energy);
           values.push_back(internal[p]);
+          values.push_back(work[p].bulk_viscosity);
+          values.push_back(work[p].gravity);
           add_vector_values(motion[p].momentum, values);
         }
     }
@@ -178,12 +183,15 @@ namespace rubberdyn
 
 
     RigidBodyColumns::RigidBodyColumns(
-      const std::vector<std::string> &body_names,
-      const std::vector<bool> &       rotating)
-      : body_names(body_names)
-      , rotating(rotating)
+      const std::vector<model::RigidBody> &bodies)
     {
-      this->rotating.resize(body_names.size(), false);
+      for (const model::RigidBody &body : bodies)
+        {
+          bool driven = false;
+          for (unsigned int d = 0; d < 3; ++d)
+            driven = driven || !body.moves_freely(d);
+          this->bodies.push_back({body.name, body.carries_nodes, driven});
+        }
     }
 
 
@@ -200,18 +208,24 @@ namespace rubberdyn
     RigidBodyColumns::history_columns() const
     {
       std::vector<std::string> columns;
-      for (unsigned int b = 0; b < body_names.size(); ++b)
+      for (const BodyColumns &body : bodies)
         {
-          const std::string &body = body_names[b];
-          add_vector_columns(body + "_position", columns);
-          add_vector_columns(body + "_velocity", columns);
-          add_vector_columns(body + "_force", columns);
-          if (rotating[b])
+          add_vector_columns(body.name + "_position", columns);
+          add_vector_columns(body.name + "_velocity", columns);
+          add_vector_columns(body.name + "_force", columns);
+          if (body.rotating)
             {
-              add_vector_columns(body + "_rotation", columns);
-              add_vector_columns(body + "_angular_velocity", columns);
-              add_vector_columns(body + "_moment", columns);
+              add_vector_columns(body.name + "_rotation", columns);
+              add_vector_columns(body.name + "_angular_velocity", columns);
+              add_vector_columns(body.name + "_moment", columns);
             }
+          else
+            {
+              columns.push_back(body.name + "_kinetic_energy");
+              columns.push_back(body.name + "_gravity_work");
+            }
+          if (body.driven)
+            columns.push_back(body.name + "_drive_work");
         }
       return columns;
     }
@@ -222,19 +236,27 @@ namespace rubberdyn
     RigidBodyColumns::history_values(const SimulationView &view,
                                      std::vector<double> &  values)
     {
-      for (unsigned int b = 0; b < body_names.size(); ++b)
+      const auto &energies = view.solver.body_energies();
+      for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           const model::RigidBody &body = view.bodies[b];
           add_vector_values(body.reference_position + body.displacement,
                             values);
           add_vector_values(body.velocity, values);
           add_vector_values(body.contact_force, values);
-          if (rotating[b])
+          if (bodies[b].rotating)
             {
               add_vector_values(model::rotation_vector(body.rotation), values);
               add_vector_values(body.angular_velocity, values);
               add_vector_values(body.contact_moment, values);
             }
+          else
+            {
+              values.push_back(energies[b].kinetic);
+              values.push_back(energies[b].gravity_work);
+            }
+          if (bodies[b].driven)
+            values.push_back(energies[b].drive_work);
         }
     }
   } // namespace postprocess

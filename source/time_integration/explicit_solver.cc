@@ -141,6 +141,10 @@ namespace rubberdyn
       , comm(comm)
       , group_internal_energy(settings.n_groups, 0.)
       , group_motion(settings.n_groups)
+      , group_work(settings.n_groups)
+      , group_viscous_work_ahead(settings.n_groups, 0.)
+      , group_gravity_increment(settings.n_groups + 1, 0.)
+      , body_energy(bodies.size())
     {
       for (VectorType *vector :
            {&u, &v, &f, &mass, &inverse_mass, &gravity_force})
@@ -291,6 +295,9 @@ namespace rubberdyn
             for (unsigned int d = 0; d < 3; ++d)
               {
                 rigid_dof[node[d]] = true;
+                // Its weight is the part's alone, as its body's kinetic
+                // energy is, also where a deformable part shares the node.
+                dof_group[node[d]] = part.group;
                 weights[3 * part.body + d] +=
                   gravity_force.local_element(node[d]);
               }
@@ -355,8 +362,8 @@ namespace rubberdyn
 
     namespace
     {
-      constexpr char         checkpoint_magic[8] = "RDYNCK3";
-      constexpr unsigned int checkpoint_version  = 3;
+      constexpr char         checkpoint_magic[8] = "RDYNCK4";
+      constexpr unsigned int checkpoint_version  = 4;
       /** Values per rigid body in a checkpoint. */
       constexpr unsigned int n_body_values = 27;
 
@@ -393,7 +400,7 @@ namespace rubberdyn
               body.rotation[d][e] = values[15 + 3 * d + e];
           }
       }
-      constexpr unsigned int n_scalars           = 17;
+      constexpr unsigned int n_scalars           = 18;
     } // namespace
 
 
@@ -422,7 +429,8 @@ namespace rubberdyn
                                          double(bodies.size()),
                                          constraint_work_ahead,
                                          energy.rigid_kinetic,
-                                         energy.largest_deformable};
+                                         energy.largest_deformable,
+                                         viscous_work_ahead};
       write_doubles(out, scalars, n_scalars);
       const unsigned int n_owned = partitioner->locally_owned_size();
       write_doubles(out, u.begin(), n_owned);
@@ -448,6 +456,20 @@ namespace rubberdyn
           for (unsigned int d = 0; d < 3; ++d)
             by_group.push_back(motion.momentum[d]);
         }
+      for (unsigned int g = 0; g < settings.n_groups; ++g)
+        {
+          by_group.push_back(group_work[g].bulk_viscosity);
+          by_group.push_back(group_work[g].gravity);
+          by_group.push_back(group_viscous_work_ahead[g]);
+        }
+      // This rank's share of the last gravity increments (summed next step).
+      by_group.insert(by_group.end(),
+                      group_gravity_increment.begin(),
+                      group_gravity_increment.begin() + settings.n_groups);
+      for (const BodyEnergy &body : body_energy)
+        for (const double value :
+             {body.kinetic, body.gravity_work, body.drive_work})
+          by_group.push_back(value);
       write_doubles(out, by_group.data(), by_group.size());
       for (const model::ForceContribution *contribution : contributions)
         contribution->save(out);
@@ -505,6 +527,7 @@ namespace rubberdyn
           constraint_work_ahead      = scalars[14];
           energy.rigid_kinetic       = scalars[15];
           energy.largest_deformable  = scalars[16];
+          viscous_work_ahead         = scalars[17];
           const unsigned int n_owned = partitioner->locally_owned_size();
           read_doubles(in, u.begin(), n_owned, "displacements");
           read_doubles(in, v.begin(), n_owned, "velocities");
@@ -524,15 +547,25 @@ namespace rubberdyn
                        "reaction work");
           read_doubles(in, reaction_work_ahead.data(),
                        reaction_work_ahead.size(), "reaction work");
-          std::vector<double> by_group(5 * settings.n_groups);
+          const unsigned int n_groups = settings.n_groups;
+          std::vector<double> by_group(9 * n_groups + 3 * bodies.size());
           read_doubles(in, by_group.data(), by_group.size(), "part energies");
-          for (unsigned int g = 0; g < settings.n_groups; ++g)
+          for (unsigned int g = 0; g < n_groups; ++g)
             {
               group_internal_energy[g]       = by_group[g];
-              group_motion[g].kinetic_energy = by_group[settings.n_groups + 4 * g];
+              group_motion[g].kinetic_energy = by_group[n_groups + 4 * g];
               for (unsigned int d = 0; d < 3; ++d)
                 group_motion[g].momentum[d] =
-                  by_group[settings.n_groups + 4 * g + 1 + d];
+                  by_group[n_groups + 4 * g + 1 + d];
+              group_work[g].bulk_viscosity = by_group[5 * n_groups + 3 * g];
+              group_work[g].gravity = by_group[5 * n_groups + 3 * g + 1];
+              group_viscous_work_ahead[g] = by_group[5 * n_groups + 3 * g + 2];
+              group_gravity_increment[g] = by_group[8 * n_groups + g];
+            }
+          for (unsigned int b = 0; b < bodies.size(); ++b)
+            {
+              const double *values = &by_group[9 * n_groups + 3 * b];
+              body_energy[b]       = {values[0], values[1], values[2]};
             }
           for (model::ForceContribution *contribution : contributions)
             contribution->load(in);
@@ -641,7 +674,7 @@ namespace rubberdyn
       // belongs to t_{n+1}, friction work, the contributions' external
       // work, the prescribed bodies' work, then the body forces, the
       // reactions and their moments, and per group the internal energy,
-      // kinetic energy and momentum.
+      // kinetic energy and momentum, bulk-viscosity power and gravity work.
       constexpr unsigned int n_energy_sums = 10;
       const unsigned int     body_offset   = n_energy_sums;
       const unsigned int     reaction_offset = body_offset + 6 * n_bodies;
@@ -649,7 +682,7 @@ namespace rubberdyn
       // Per constraint group: reaction, moment (3), work up to t_n and its
       // share on [t_n, t_{n+1}].
       const unsigned int     group_offset    = moment_offset + 5 * n_cgroups;
-      std::vector<double> sums(group_offset + 5 * n_groups);
+      std::vector<double> sums(group_offset + 7 * n_groups);
       std::vector<double> local_reaction(6 * n_cgroups);
       std::vector<double> shared_velocity(shared_dofs.size());
       // Kinetic energy and momentum per group, plus one bucket for the
@@ -864,6 +897,10 @@ namespace rubberdyn
               for (unsigned int d = 0; d < 3; ++d)
                 sums[group_offset + n_groups + 4 * g + 1 + d] =
                   group_momentum[3 * g + d];
+              sums[group_offset + 5 * n_groups + g] =
+                results.bulk_viscosity_power_by_group[g];
+              sums[group_offset + 6 * n_groups + g] =
+                group_gravity_increment[g];
             }
           Utilities::MPI::sum(ArrayView<const double>(sums),
                               comm,
@@ -873,7 +910,13 @@ namespace rubberdyn
           energy.kinetic  = sums[0];
           energy.internal = sums[1];
           energy.contact  = sums[2];
-          energy.bulk_viscosity_work += sums[3] * average_step;
+          // The viscous forces at t_n act on [t_{n-1/2}, t_{n+1/2}]: the
+          // half on [t_n, t_{n+1/2}] belongs to the energies at t_{n+1}, as
+          // the constraints' work does (the same time level as the kinetic
+          // energy at t_n and the trapezoidal external work up to t_n).
+          energy.bulk_viscosity_work +=
+            viscous_work_ahead + (started ? 0.5 * sums[3] * last_time_step : 0.);
+          viscous_work_ahead = 0.5 * sums[3] * new_step;
           energy.external_work +=
             sums[4] + constraint_work_ahead + sums[5] + sums[8];
           constraint_work_ahead = sums[6];
@@ -898,6 +941,13 @@ namespace rubberdyn
               for (unsigned int d = 0; d < 3; ++d)
                 group_motion[g].momentum[d] =
                   sums[group_offset + n_groups + 4 * g + 1 + d];
+              // Booked like the model's bulk-viscosity and gravity work.
+              const double group_power = sums[group_offset + 5 * n_groups + g];
+              group_work[g].bulk_viscosity +=
+                group_viscous_work_ahead[g] +
+                (started ? 0.5 * group_power * last_time_step : 0.);
+              group_viscous_work_ahead[g] = 0.5 * group_power * new_step;
+              group_work[g].gravity += sums[group_offset + 6 * n_groups + g];
             }
           const double half_step_time = current_time + 0.5 * new_step;
           energy.rigid_kinetic        = 0.;
@@ -974,6 +1024,7 @@ namespace rubberdyn
                 }
               energy.kinetic += body_kinetic;
               energy.rigid_kinetic += body_kinetic;
+              body_energy[b].kinetic = body_kinetic;
               if (body.carries_nodes)
                 for (const RigidPartNodes &part : rigid_parts)
                   if (part.body == b)
@@ -1001,25 +1052,52 @@ namespace rubberdyn
           // direction does work on the solid there: minus the solid's
           // force on it times its displacement.
           // (A rigid part's gravity work is its nodes', booked below.)
-          for (RigidBody &body : bodies)
+          for (unsigned int b = 0; b < n_bodies; ++b)
             {
+              RigidBody &        body      = bodies[b];
               const Tensor<1, 3> increment = new_step * body.velocity;
               body.displacement += increment;
               body.rotation = body.rotation_after(new_step);
               for (unsigned int d = 0; d < 3; ++d)
                 if (!body.moves_freely(d))
-                  energy.external_work -= body.contact_force[d] * increment[d];
+                  {
+                    const double work = -body.contact_force[d] * increment[d];
+                    energy.external_work += work;
+                    body_energy[b].drive_work += work;
+                  }
                 else if (!body.carries_nodes)
-                  energy.external_work +=
-                    body.mass * settings.gravity[d] * increment[d];
+                  {
+                    const double work =
+                      body.mass * settings.gravity[d] * increment[d];
+                    energy.external_work += work;
+                    body_energy[b].gravity_work += work;
+                  }
             }
           gravity_work_increment = 0.;
+          std::fill(group_gravity_increment.begin(),
+                    group_gravity_increment.end(),
+                    0.);
           for (unsigned int i = 0; i < n_owned; ++i)
             {
               const double increment = new_step * v.local_element(i);
               u.local_element(i) += increment;
-              gravity_work_increment += gravity_force.local_element(i) * increment;
+              const double work = gravity_force.local_element(i) * increment;
+              gravity_work_increment += work;
+              group_gravity_increment[dof_group[i]] += work;
             }
+          // The dofs shared by several parts (the last entry): split by
+          // mass, like their kinetic energy. A rigid part's are its own.
+          for (const SharedDof &shared : shared_dofs)
+            if (!rigid_dof[shared.dof])
+              {
+                const unsigned int i = shared.dof;
+                const double       work_per_mass =
+                  gravity_force.local_element(i) * new_step *
+                  v.local_element(i) * inverse_mass.local_element(i);
+                for (unsigned int g = 0; g < n_groups; ++g)
+                  group_gravity_increment[g] +=
+                    work_per_mass * shared.mass_by_group[g];
+              }
           for (model::ForceContribution *contribution : contributions)
             contribution->accept_step();
           timing.vector_updates += lap(clock);

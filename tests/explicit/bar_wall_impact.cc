@@ -50,6 +50,16 @@
 // Gibbs oscillations that trail a front in a lumped-mass mesh.
 // Bulk viscosity keeps its defaults (linear 0.06, quadratic 1.5): it only
 // acts while the volume changes, i.e. in the fronts, not on the plateau.
+//
+// Energy (issue 11, "an energy-balance assertion in the bar-on-wall test"):
+// nothing but the wall acts, and it is held, so E_kin + E_int + E_contact
+// + W_bulk viscosity stays at E_0 = M v0^2 / 2 (conservation of energy).
+// Checked at every step: the solver's error |E_kin + E_int + E_contact +
+// W_bv + W_friction - E_0 - W_ext| below 1e-3 E_0, and the external work
+// zero (the wall does not move) to 1e-12 E_0. After the separation the bar
+// carries E_0 - W_bv as kinetic energy and the elastic ringing the wave
+// leaves behind: E_kin + E_int + W_bv = E_0 within 1e-3, and W_bv >= 0
+// (the viscosity only dissipates).
 #include <deal.II/base/mpi.h>
 
 #include <rubberdyn/contact/rigid_surface_contact.h>
@@ -96,10 +106,23 @@ main(int argc, char **argv)
   // Wall force at every step (the same on every rank: the solver sums the
   // contact force over all ranks).
   std::vector<double> times, forces;
+  double largest_error = 0., largest_external = 0., smallest_viscous = 0.;
   solver.run(1.25 * 2. * length / c, [&]() {
     times.push_back(solver.time());
     forces.push_back(-bodies[0].contact_force[2]);
+    const ti::EnergyBalance &e = solver.energies();
+    largest_error    = std::max(largest_error, e.absolute_error());
+    largest_external = std::max(largest_external, std::abs(e.external_work));
+    smallest_viscous = std::min(smallest_viscous, e.bulk_viscosity_work);
   });
+  const ti::EnergyBalance &final_energy = solver.energies();
+  const double             E0           = final_energy.initial;
+  const double             mass         = rho * model.area() * length;
+  const double             energy_error = largest_error / E0;
+  const double             final_balance =
+    std::abs(final_energy.kinetic + final_energy.internal +
+             final_energy.bulk_viscosity_work - E0) /
+    E0;
 
   // First contact: the last sample without force before the first with
   // force (the gap is zero at t = 0 and closes from then on). Separation:
@@ -156,6 +179,13 @@ main(int argc, char **argv)
           << "contact duration: " << duration
           << " ms, 2 L / c = " << duration_exact << " ms, error " << std::fixed
           << std::setprecision(2) << 100. * duration_error << " %" << std::endl;
+      out << std::scientific << std::setprecision(1)
+          << "E_0 / (M v0^2 / 2) - 1: "
+          << E0 / (0.5 * mass * v0 * v0) - 1. << std::endl
+          << "largest energy error / E_0: " << energy_error << std::endl
+          << "after separation, |E_kin + E_int + W_bv - E_0| / E_0: "
+          << final_balance << std::endl
+          << "largest |W_ext| / E_0: " << largest_external / E0 << std::endl;
       out << "plateau force within 3 %: "
           << (force_error < 0.03 ? "PASS" : "FAIL") << std::endl;
       out << "contact duration within 2 %: "
@@ -165,4 +195,11 @@ main(int argc, char **argv)
                  "the bar leaves the wall once and for all");
   testing::check(force_error < 0.03, "plateau force within 3 %");
   testing::check(duration_error < 0.02, "contact duration within 2 %");
+  testing::check(std::abs(E0 / (0.5 * mass * v0 * v0) - 1.) < 1e-12,
+                 "the initial energy is M v0^2 / 2");
+  testing::check(energy_error < 1e-3, "energy error below 1e-3 of E_0");
+  testing::check(largest_external < 1e-12 * E0, "a held wall does no work");
+  testing::check(smallest_viscous >= 0., "bulk viscosity only dissipates");
+  testing::check(final_balance < 1e-3,
+                 "after separation E_kin + E_int + W_bv = E_0 within 1e-3");
 }

@@ -157,6 +157,12 @@ namespace rubberdyn
        * viscous forces take out of the system.
        */
       double bulk_viscosity_power = 0.;
+      /**
+       * The same per element group (kN mm / ms), ordered like
+       * internal_energy_by_group; its sum is bulk_viscosity_power up to
+       * round-off.
+       */
+      std::vector<double> bulk_viscosity_power_by_group;
       /** Smallest stable element time step (ms). */
       double min_time_step = std::numeric_limits<double>::max();
       /**

@@ -43,6 +43,8 @@ namespace rubberdyn
       double contact_energy = 0.;
       /** Power of the bulk viscosity forces (kN mm/ms). */
       double bulk_viscosity_power = 0.;
+      /** The same per element group (kN mm/ms), like the element groups. */
+      std::vector<double> bulk_viscosity_power_by_group;
       /** Energy dissipated by friction in this evaluation (J). */
       double friction_dissipation = 0.;
       /**

@@ -77,7 +77,11 @@ namespace rubberdyn
 
     /**
      * Per part (LS-DYNA's MATSUM): `<part>_kinetic_energy`,
-     * `<part>_internal_energy` (J) and `<part>_momentum_x/_y/_z` (kg mm/ms).
+     * `<part>_internal_energy`, `<part>_bulk_viscosity_work` (dissipated by
+     * its bulk viscosity), `<part>_gravity_work` (done by gravity on its
+     * nodes) (J) and `<part>_momentum_x/_y/_z` (kg mm/ms). With
+     * RigidBodyColumns' energies and the interactions' works they add up to
+     * the model's energy columns (doc/model.md, "Energy balance").
      */
     class PartColumns : public Postprocessor
     {
@@ -110,6 +114,11 @@ namespace rubberdyn
      * `<name>_rotation_x/_y/_z` (its rotation vector, rad),
      * `<name>_angular_velocity_x/_y/_z` (rad/ms) and
      * `<name>_moment_x/_y/_z` (kN mm, of that force about its centre).
+     * A rigid surface's body (not a part) also gets `<name>_kinetic_energy`
+     * and `<name>_gravity_work` (J; a rigid part's are in its
+     * PartColumns), and a body held or driven in some direction
+     * `<name>_drive_work` (J, the work done on the solid through it:
+     * time_integration::BodyEnergy).
      */
     class RigidBodyColumns : public Postprocessor
     {
@@ -118,13 +127,11 @@ namespace rubberdyn
       name() const override;
 
       /**
-       * @param body_names The bodies' names, in the order of the solver's
-       *   bodies.
-       * @param rotating Per body whether it gets the rotation columns;
-       *   empty: none does.
+       * @param bodies The solver's bodies, set up (a rigid part's body
+       *   carries nodes: it gets the rotation columns and no energy
+       *   columns of its own).
        */
-      explicit RigidBodyColumns(const std::vector<std::string> &body_names,
-                                const std::vector<bool> &rotating = {});
+      explicit RigidBodyColumns(const std::vector<model::RigidBody> &bodies);
 
       std::vector<std::string>
       history_columns() const override;
@@ -134,8 +141,14 @@ namespace rubberdyn
                      std::vector<double> &  values) override;
 
     private:
-      std::vector<std::string> body_names;
-      std::vector<bool>        rotating;
+      /** What each body gets. */
+      struct BodyColumns
+      {
+        std::string name;
+        bool        rotating;
+        bool        driven;
+      };
+      std::vector<BodyColumns> bodies;
     };
   } // namespace postprocess
 } // namespace rubberdyn

@@ -155,6 +155,46 @@ namespace rubberdyn
     };
 
     /**
+     * The work terms of one group of nodes (a part) up to the current time,
+     * summed over all ranks, booked like the model's: with
+     * GroupMotion::kinetic_energy and the part's internal energy they are
+     * the part's share of every term of EnergyBalance (LS-DYNA's MATSUM).
+     * A node shared by several parts is split between them by mass, like
+     * its kinetic energy; a rigid part's nodes belong to it alone.
+     */
+    struct GroupWork
+    {
+      /** Energy dissipated by the part's bulk viscosity (J). */
+      double bulk_viscosity = 0.;
+      /** Work of gravity on the part's nodes (J). */
+      double gravity = 0.;
+    };
+
+    /**
+     * The energy terms of one rigid body up to the current time, summed
+     * over all ranks: what it adds to EnergyBalance.
+     */
+    struct BodyEnergy
+    {
+      /**
+       * Kinetic energy of translation and rotation (J). For a rigid part
+       * it is also the part's GroupMotion::kinetic_energy.
+       */
+      double kinetic = 0.;
+      /**
+       * Work of gravity on the body (J); 0 for a rigid part, whose weight
+       * acts on its nodes (GroupWork::gravity).
+       */
+      double gravity_work = 0.;
+      /**
+       * Work done on the solid through the body where its motion is
+       * prescribed (held or driven directions): minus the solid's force on
+       * the body times the body's displacement (J).
+       */
+      double drive_work = 0.;
+    };
+
+    /**
      * Wall time (s) spent in each part of the time steps of a run, on this
      * rank, for the benchmark breakdown.
      */
@@ -350,6 +390,16 @@ namespace rubberdyn
       {
         return group_motion;
       }
+      /** Bulk-viscosity and gravity work of each group (GroupWork). */
+      const std::vector<GroupWork> &work_by_group() const
+      {
+        return group_work;
+      }
+      /** Energy terms of each rigid body, in the order of the bodies. */
+      const std::vector<BodyEnergy> &body_energies() const
+      {
+        return body_energy;
+      }
       /** Total added mass of mass scaling (kg). */
       double added_mass() const { return total_added_mass; }
       /** Physical mass of the solid (kg). */
@@ -444,6 +494,16 @@ namespace rubberdyn
       EnergyBalance energy;
       std::vector<double>      group_internal_energy;
       std::vector<GroupMotion> group_motion;
+      std::vector<GroupWork>   group_work;
+      /** Each group's share of viscous_work_ahead (summed over all ranks). */
+      std::vector<double> group_viscous_work_ahead;
+      /**
+       * Gravity work of the last displacement update per group on this
+       * rank (one more entry for the dofs shared by several groups, split
+       * by mass afterwards), booked next step like gravity_work_increment.
+       */
+      std::vector<double>     group_gravity_increment;
+      std::vector<BodyEnergy> body_energy;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
       /** Gravity work of the last displacement update, booked next step. */
@@ -457,6 +517,11 @@ namespace rubberdyn
        * (summed over all ranks): it belongs to the energies at t_{n+1}.
        */
       double constraint_work_ahead = 0.;
+      /**
+       * The work of the bulk-viscosity forces at t_n on [t_n, t_{n+1/2}]
+       * (summed over all ranks): booked with the energies at t_{n+1}.
+       */
+      double viscous_work_ahead = 0.;
       model::ContributionResults  results;
       StepTimings                 timing;
     };
