@@ -7,7 +7,8 @@
 //    closed form phi_b = M / (8 pi C10 L) (1/a^2 - 1/b^2), both ways
 //    (phi(M) and M(phi)), and the radial stress rise
 //    sigma_rr(r) - sigma_rr(a) = C10 k^2 / 2 (1/a^4 - 1/r^4),
-//    k = M / (4 pi C10 L). Tolerance 1e-12 relative: the quadrature of the
+//    k = M / (4 pi C10 L), and the ends' axial force
+//    N = -(2 pi / 3) C10 k^2 (1/a^2 - 1/b^2). Tolerance 1e-12 relative: the quadrature of the
 //    analytic integrand and the root solves are exact to rounding (1e-15).
 // 2. The small-strain limit M / phi -> 4 pi G L a^2 b^2 / (b^2 - a^2),
 //    G = 2 C10 (Timoshenko's torsion of a hollow cylinder; the reference
@@ -176,9 +177,12 @@ main()
         largest = std::max(largest, relative(state.outer_shear, k / (b * b)));
         const double rise = 0.5 * c10 * k * k * (1. / std::pow(a, 4) - 1. / std::pow(15., 4));
         largest = std::max(largest, relative(tube.radial_stress_rise(moment, 15.), rise));
+        const double force =
+          -2. * M_PI / 3. * c10 * k * k * (1. / (a * a) - 1. / (b * b));
+        largest = std::max(largest, relative(tube.end_force(moment), force));
       }
     out() << "neo-Hooke: phi_b(M), M(phi_b), gamma(a), gamma(b) and "
-             "sigma_rr(15) - sigma_rr(a) against the closed forms at "
+             "sigma_rr(15) - sigma_rr(a), N against the closed forms at "
              "M = 1e-6 ... 20 kN mm: largest relative error "
           << (largest < 1e-12 ? "< 1e-12" : sci(largest)) << std::endl;
     check(largest < 1e-12, "neo-Hooke closed form, relative error " + sci(largest));
@@ -296,14 +300,14 @@ main()
           << "Tube a = 10, b = 20, L = 10 mm, C10 = 0.00055, C20 = -5e-5, "
              "C30 = 1.5e-5 GPa (small-strain stiffness "
           << g6(tube.small_strain_stiffness()) << " kN mm/rad)" << std::endl
-          << "gamma(a)  gamma(b)  phi_b (rad)  M (kN mm)  M / (K phi_b)" << std::endl;
+          << "gamma(a)  gamma(b)  phi_b (rad)  M (kN mm)  M / (K phi_b)  N (kN)" << std::endl;
     for (unsigned int i = 1; i <= 8; ++i)
       {
         const auto s = tube.at_inner_shear(0.25 * i);
         out() << fixed(s.inner_shear, 2) << "      " << fixed(s.outer_shear, 6) << "  "
               << fixed(s.rotation, 6) << "     " << fixed(s.moment, 6) << "   "
               << fixed(s.moment / (tube.small_strain_stiffness() * s.rotation), 6)
-              << std::endl;
+              << "       " << fixed(tube.end_force(s.moment), 6) << std::endl;
       }
     const double phi_end = tube.at_inner_shear(2.).rotation;
     out() << "phi_b (rad)  M (kN mm)  gamma(a)" << std::endl;

@@ -25,7 +25,7 @@ namespace verification
   /**
    * Azimuthal shear of a bonded tube of incompressible isotropic material
    * with a strain energy W(I1) (Rivlin's universal deformation; Ogden,
-   * Non-Linear Elastic Deformations (1984), section 5.2): the inner surface
+   * Non-Linear Elastic Deformations (1984), chapter 5): the inner surface
    * r = a is held, the outer surface r = b is turned by the angle
    * @f$\varphi_b@f$ about the axis, nothing moves axially. The material
    * points move on circles, @f$r = R,\ \theta = \Theta + \psi(R),\ z = Z@f$,
@@ -350,6 +350,31 @@ namespace verification
         const double gamma = shear_at(moment, s);
         return 2. * w1(gamma) * gamma * gamma;
       });
+    }
+
+    /**
+     * The axial force (kN, negative: compressive) that the two ends must
+     * carry to keep the tube at its length when the displacement is
+     * prescribed on the whole boundary normal (inner and outer surfaces
+     * bonded, ends held axially and free in their plane), in the limit of
+     * a nearly incompressible material:
+     * @f[ N = -\frac{4\pi}{3}\int_a^b W_1\gamma^2\, r\,dr . @f]
+     * The incompressible problem leaves a constant pressure free; a
+     * compressible law with bulk modulus K fixes it by
+     * @f$\int_V (J - 1)\,dV = 0@f$ (the boundary keeps the volume), which
+     * makes the mean stress @f$\sigma_m \approx K(J - 1)@f$ average to zero,
+     * up to a relative O(G/K). With
+     * @f$\sigma_m = \sigma_{rr} + \tfrac23 W_1\gamma^2@f$ and
+     * @f$\sigma_{zz} = \sigma_{rr}@f$ this gives N (doc/theory.md).
+     */
+    double
+    end_force(const double moment) const
+    {
+      shear_at(moment, a);
+      return -4. * M_PI / 3. * integrate_over_log_radius([&](const double r) {
+               const double gamma = shear_at(moment, r);
+               return w1(gamma) * gamma * gamma * r * r;
+             });
     }
 
   private:
