@@ -8,8 +8,9 @@
 //    (phi(M) and M(phi)), and the radial stress rise
 //    sigma_rr(r) - sigma_rr(a) = C10 k^2 / 2 (1/a^4 - 1/r^4),
 //    k = M / (4 pi C10 L), and the ends' axial force
-//    N = -(2 pi / 3) C10 k^2 (1/a^2 - 1/b^2). Tolerance 1e-12 relative: the quadrature of the
-//    analytic integrand and the root solves are exact to rounding (1e-15).
+//    N = -(2 pi / 3) C10 k^2 (1/a^2 - 1/b^2). Tolerance 1e-12 relative: the
+//    quadrature of the analytic integrand and the root solves are exact to
+//    rounding (1e-15).
 // 2. The small-strain limit M / phi -> 4 pi G L a^2 b^2 / (b^2 - a^2),
 //    G = 2 C10 (Timoshenko's torsion of a hollow cylinder; the reference
 //    notes, validation-benchmarks.md section 7): to 1e-10 relative at
@@ -34,11 +35,12 @@
 // Then the curve M(phi) of the tube the quasi-static solver's test uses
 // (a = 10, b = 20, L = 10 mm, the study's C10 = 0.00055, C20 = -5e-5,
 // C30 = 1.5e-5 GPa) up to gamma(a) = 2, printed for doc/verification.md.
+#include "tube_azimuthal_shear.h"
+
 #include <functional>
 #include <sstream>
 
 #include "../tests.h"
-#include "tube_azimuthal_shear.h"
 
 using testing::check;
 using testing::out;
@@ -142,14 +144,25 @@ namespace
                        const double length,
                        const double moment)
   {
-    const double gamma_a = bisect_shear(yeoh, moment / (2. * M_PI * a * a * length));
-    const double gamma_b = bisect_shear(yeoh, moment / (2. * M_PI * b * b * length));
-    const auto   f = [&](const double g) { return g * g * yeoh.w11(g) / yeoh.w1(g); };
+    const double gamma_a =
+      bisect_shear(yeoh, moment / (2. * M_PI * a * a * length));
+    const double gamma_b =
+      bisect_shear(yeoh, moment / (2. * M_PI * b * b * length));
+    const auto f = [&](const double g) {
+      return g * g * yeoh.w11(g) / yeoh.w1(g);
+    };
     const double fm = f(0.5 * (gamma_a + gamma_b));
     const double whole =
       (gamma_a - gamma_b) / 6. * (f(gamma_b) + 4. * fm + f(gamma_a));
-    return 0.5 * (gamma_a - gamma_b) +
-           simpson(f, gamma_b, gamma_a, f(gamma_b), fm, f(gamma_a), whole, 1e-16, 40);
+    return 0.5 * (gamma_a - gamma_b) + simpson(f,
+                                               gamma_b,
+                                               gamma_a,
+                                               f(gamma_b),
+                                               fm,
+                                               f(gamma_a),
+                                               whole,
+                                               1e-16,
+                                               40);
   }
 } // namespace
 
@@ -163,7 +176,7 @@ main()
   // 1. Neo-Hooke closed forms.
   {
     const TubeAzimuthalShear tube(a, b, length, c10, 0., 0.);
-    double largest = 0.;
+    double                   largest = 0.;
     for (const double moment : {1e-6, 1e-3, 0.5, 3., 20.})
       {
         const double closed =
@@ -171,12 +184,15 @@ main()
         largest = std::max(largest, relative(tube.rotation(moment), closed));
         // Inverse: M(phi) at the closed-form rotation.
         const auto state = tube.at_rotation(closed);
-        largest = std::max(largest, relative(state.moment, moment));
-        const double k = moment / (4. * M_PI * c10 * length);
+        largest          = std::max(largest, relative(state.moment, moment));
+        const double k   = moment / (4. * M_PI * c10 * length);
         largest = std::max(largest, relative(state.inner_shear, k / (a * a)));
         largest = std::max(largest, relative(state.outer_shear, k / (b * b)));
-        const double rise = 0.5 * c10 * k * k * (1. / std::pow(a, 4) - 1. / std::pow(15., 4));
-        largest = std::max(largest, relative(tube.radial_stress_rise(moment, 15.), rise));
+        const double rise =
+          0.5 * c10 * k * k * (1. / std::pow(a, 4) - 1. / std::pow(15., 4));
+        largest =
+          std::max(largest,
+                   relative(tube.radial_stress_rise(moment, 15.), rise));
         const double force =
           -2. * M_PI / 3. * c10 * k * k * (1. / (a * a) - 1. / (b * b));
         largest = std::max(largest, relative(tube.end_force(moment), force));
@@ -185,7 +201,8 @@ main()
              "sigma_rr(15) - sigma_rr(a), N against the closed forms at "
              "M = 1e-6 ... 20 kN mm: largest relative error "
           << (largest < 1e-12 ? "< 1e-12" : sci(largest)) << std::endl;
-    check(largest < 1e-12, "neo-Hooke closed form, relative error " + sci(largest));
+    check(largest < 1e-12,
+          "neo-Hooke closed form, relative error " + sci(largest));
   }
 
   // 2. Small-strain limit.
@@ -200,39 +217,45 @@ main()
     const double at_micro = std::abs(deviation(1e-6));
     out() << "  M / (K phi) - 1 at phi = 1e-6 rad: "
           << (at_micro < 1e-10 ? "|.| < 1e-10" : sci(at_micro)) << std::endl;
-    check(at_micro < 1e-10, "small-strain limit at phi = 1e-6: " + sci(at_micro));
+    check(at_micro < 1e-10,
+          "small-strain limit at phi = 1e-6: " + sci(at_micro));
     const double d3 = deviation(1e-3), d4 = deviation(1e-4);
     out() << "  at phi = 1e-3: " << sci(d3) << ", at 1e-4: " << sci(d4)
           << ", ratio " << fixed(d3 / d4, 2) << " (phi^2: 100)" << std::endl;
-    check(std::abs(d3 / d4 - 100.) < 1., "the deviation from the small-strain "
-                                         "limit is of order phi^2");
+    check(std::abs(d3 / d4 - 100.) < 1.,
+          "the deviation from the small-strain "
+          "limit is of order phi^2");
   }
 
   // 3. Yeoh against the independent computation.
   {
     const Yeoh               yeoh{c10, c20, c30};
     const TubeAzimuthalShear tube(a, b, length, c10, c20, c30);
-    double largest = 0., largest_inverse = 0.;
+    double                   largest = 0., largest_inverse = 0.;
     for (const double gamma_a : {0.01, 0.3, 1., 2., 3.5})
       {
-        const double moment =
-          2. * M_PI * a * a * length * yeoh.tau(gamma_a);
-        const double phi = tube.rotation(moment);
-        largest = std::max(largest, relative(phi, independent_rotation(yeoh, a, b, length, moment)));
+        const double moment = 2. * M_PI * a * a * length * yeoh.tau(gamma_a);
+        const double phi    = tube.rotation(moment);
+        largest =
+          std::max(largest,
+                   relative(phi,
+                            independent_rotation(yeoh, a, b, length, moment)));
         const auto state = tube.at_rotation(phi);
-        largest_inverse = std::max({largest_inverse,
-                                    relative(state.moment, moment),
-                                    relative(state.inner_shear, gamma_a)});
+        largest_inverse  = std::max({largest_inverse,
+                                     relative(state.moment, moment),
+                                     relative(state.inner_shear, gamma_a)});
       }
     out() << "Yeoh, gamma(a) = 0.01 ... 3.5: phi_b(M) against the "
              "independent gamma-integral (bisection, adaptive Simpson): "
              "largest relative difference "
           << (largest < 1e-9 ? "< 1e-9" : sci(largest)) << std::endl;
-    check(largest < 1e-9, "Yeoh against the independent computation: " + sci(largest));
+    check(largest < 1e-9,
+          "Yeoh against the independent computation: " + sci(largest));
     out() << "  M(phi_b(M)) and gamma(a) back: largest relative error "
           << (largest_inverse < 1e-12 ? "< 1e-12" : sci(largest_inverse))
           << std::endl;
-    check(largest_inverse < 1e-12, "the inversion M(phi): " + sci(largest_inverse));
+    check(largest_inverse < 1e-12,
+          "the inversion M(phi): " + sci(largest_inverse));
   }
 
   // 4. The tabulated values of the reference notes (MPa, N mm).
@@ -240,8 +263,10 @@ main()
     const TubeAzimuthalShear tube(10., 25., 50., 0.18303, -1.418e-3, 3.935e-5);
     out() << "reference notes' table (a = 10, b = 25, L = 50, bold Yeoh set):"
           << std::endl;
-    const std::vector<std::pair<double, double>> table = {
-      {1000., 0.036523}, {10000., 0.366908}, {20000., 0.743926}, {40000., 1.547246}};
+    const std::vector<std::pair<double, double>> table = {{1000., 0.036523},
+                                                          {10000., 0.366908},
+                                                          {20000., 0.743926},
+                                                          {40000., 1.547246}};
     for (const auto &[torque, phi] : table)
       {
         const double computed = tube.rotation(torque);
@@ -257,9 +282,12 @@ main()
     out() << "monotone range of tau(gamma) = 2 W1 gamma:" << std::endl;
     const TubeAzimuthalShear study(a, b, length, c10, c20, c30);
     out() << "  study constants: 3 C20^2 = " << g6(3. * c20 * c20)
-          << " < 5 C10 C30 = " << g6(5. * c10 * c30) << ", monotone for all gamma: "
-          << (std::isinf(study.largest_monotone_shear()) ? "yes" : "no") << std::endl;
-    check(std::isinf(study.largest_monotone_shear()), "the study's Yeoh is monotone");
+          << " < 5 C10 C30 = " << g6(5. * c10 * c30)
+          << ", monotone for all gamma: "
+          << (std::isinf(study.largest_monotone_shear()) ? "yes" : "no")
+          << std::endl;
+    check(std::isinf(study.largest_monotone_shear()),
+          "the study's Yeoh is monotone");
 
     for (const double c30_here : {0., 1e-6})
       {
@@ -268,16 +296,21 @@ main()
         const double             expected =
           c30_here == 0. ?
                         std::sqrt(-c10 / (6. * c20)) :
-                        std::sqrt((-6. * c20 - std::sqrt(36. * c20 * c20 - 60. * c10 * c30_here)) /
-                                  (30. * c30_here));
-        out() << "  C30 = " << c30_here << ": tau peaks at gamma* = " << fixed(peak, 6)
-              << ", tau'(gamma*) / (2 C10) = " << sci(tube.shear_stress_slope(peak) / (2. * c10))
-              << std::endl;
+                        std::sqrt(
+              (-6. * c20 - std::sqrt(36. * c20 * c20 - 60. * c10 * c30_here)) /
+              (30. * c30_here));
+        out() << "  C30 = " << c30_here
+              << ": tau peaks at gamma* = " << fixed(peak, 6)
+              << ", tau'(gamma*) / (2 C10) = "
+              << sci(tube.shear_stress_slope(peak) / (2. * c10)) << std::endl;
         check(relative(peak, expected) < 1e-14, "gamma* closed form");
-        check(std::abs(tube.shear_stress_slope(peak)) < 1e-12 * c10, "tau' vanishes at gamma*");
-        check(tube.shear_stress_slope(0.999 * peak) > 0., "tau' > 0 below gamma*");
+        check(std::abs(tube.shear_stress_slope(peak)) < 1e-12 * c10,
+              "tau' vanishes at gamma*");
+        check(tube.shear_stress_slope(0.999 * peak) > 0.,
+              "tau' > 0 below gamma*");
         // A torque whose stress at r = a exceeds the peak is refused.
-        const double too_large = 2. * M_PI * a * a * length * tube.shear_stress(peak) * 1.001;
+        const double too_large =
+          2. * M_PI * a * a * length * tube.shear_stress(peak) * 1.001;
         bool refused = false;
         try
           {
@@ -300,13 +333,16 @@ main()
           << "Tube a = 10, b = 20, L = 10 mm, C10 = 0.00055, C20 = -5e-5, "
              "C30 = 1.5e-5 GPa (small-strain stiffness "
           << g6(tube.small_strain_stiffness()) << " kN mm/rad)" << std::endl
-          << "gamma(a)  gamma(b)  phi_b (rad)  M (kN mm)  M / (K phi_b)  N (kN)" << std::endl;
+          << "gamma(a)  gamma(b)  phi_b (rad)  M (kN mm)  M / (K phi_b)  N (kN)"
+          << std::endl;
     for (unsigned int i = 1; i <= 8; ++i)
       {
         const auto s = tube.at_inner_shear(0.25 * i);
-        out() << fixed(s.inner_shear, 2) << "      " << fixed(s.outer_shear, 6) << "  "
-              << fixed(s.rotation, 6) << "     " << fixed(s.moment, 6) << "   "
-              << fixed(s.moment / (tube.small_strain_stiffness() * s.rotation), 6)
+        out() << fixed(s.inner_shear, 2) << "      " << fixed(s.outer_shear, 6)
+              << "  " << fixed(s.rotation, 6) << "     " << fixed(s.moment, 6)
+              << "   "
+              << fixed(s.moment / (tube.small_strain_stiffness() * s.rotation),
+                       6)
               << "       " << fixed(tube.end_force(s.moment), 6) << std::endl;
       }
     const double phi_end = tube.at_inner_shear(2.).rotation;
@@ -314,8 +350,8 @@ main()
     for (unsigned int i = 1; 0.05 * i <= phi_end; ++i)
       {
         const auto s = tube.at_rotation(0.05 * i);
-        out() << fixed(0.05 * i, 2) << "         " << fixed(s.moment, 6) << "   "
-              << fixed(s.inner_shear, 6) << std::endl;
+        out() << fixed(0.05 * i, 2) << "         " << fixed(s.moment, 6)
+              << "   " << fixed(s.inner_shear, 6) << std::endl;
       }
   }
 }

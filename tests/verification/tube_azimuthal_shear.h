@@ -103,18 +103,19 @@ namespace verification
       // on the Legendre polynomial from the Chebyshev estimate.
       for (unsigned int i = 0; i < n_points; ++i)
         {
-          double x = std::cos(M_PI * (i + 0.75) / (n_points + 0.5));
+          double x          = std::cos(M_PI * (i + 0.75) / (n_points + 0.5));
           double derivative = 0.;
           for (unsigned int iteration = 0; iteration < 100; ++iteration)
             {
               double p0 = 1., p1 = x;
               for (unsigned int k = 2; k <= n_points; ++k)
                 {
-                  const double p2 = ((2. * k - 1.) * x * p1 - (k - 1.) * p0) / k;
-                  p0              = p1;
-                  p1              = p2;
+                  const double p2 =
+                    ((2. * k - 1.) * x * p1 - (k - 1.) * p0) / k;
+                  p0 = p1;
+                  p1 = p2;
                 }
-              derivative     = n_points * (x * p1 - p0) / (x * x - 1.);
+              derivative      = n_points * (x * p1 - p0) / (x * x - 1.);
               const double dx = p1 / derivative;
               x -= dx;
               if (std::abs(dx) < 1e-16)
@@ -125,7 +126,8 @@ namespace verification
         }
     }
 
-    /** @f$W_1 = \partial W/\partial I_1@f$ at @f$I_1 = 3 + \gamma^2@f$ (GPa). */
+    /** @f$W_1 = \partial W/\partial I_1@f$ at @f$I_1 = 3 + \gamma^2@f$ (GPa).
+     */
     double
     w1(const double gamma) const
     {
@@ -187,8 +189,8 @@ namespace verification
             throw std::domain_error(
               "TubeAzimuthalShear: the shear stress " + std::to_string(target) +
               " exceeds the largest the Yeoh law carries monotonically, " +
-              std::to_string(shear_stress(high)) + " at gamma = " +
-              std::to_string(high));
+              std::to_string(shear_stress(high)) +
+              " at gamma = " + std::to_string(high));
         }
       else
         {
@@ -208,7 +210,8 @@ namespace verification
           double next = gamma - residual / shear_stress_slope(gamma);
           if (!(next > low && next < high))
             next = 0.5 * (low + high);
-          if (std::abs(next - gamma) <= 4. * eps * gamma || high - low <= 4. * eps * high)
+          if (std::abs(next - gamma) <= 4. * eps * gamma ||
+              high - low <= 4. * eps * high)
             return next;
           gamma = next;
         }
@@ -248,7 +251,10 @@ namespace verification
     State
     at_moment(const double moment) const
     {
-      return {moment, rotation(moment), shear_at(moment, a), shear_at(moment, b)};
+      return {moment,
+              rotation(moment),
+              shear_at(moment, a),
+              shear_at(moment, b)};
     }
 
     /**
@@ -280,8 +286,8 @@ namespace verification
       if (std::isfinite(gamma_monotone))
         {
           // Just below the end, where the shear is still solvable.
-          high = 2. * M_PI * a * a * length *
-                 shear_stress(gamma_monotone) * (1. - 1e-12);
+          high = 2. * M_PI * a * a * length * shear_stress(gamma_monotone) *
+                 (1. - 1e-12);
           if (!(rotation(high) > rotation_b))
             throw std::domain_error(
               "TubeAzimuthalShear: the rotation " + std::to_string(rotation_b) +
@@ -293,8 +299,8 @@ namespace verification
           while (rotation(high) < rotation_b)
             high *= 2.;
         }
-      double moment = std::min(small_strain_stiffness() * rotation_b,
-                               0.5 * (low + high));
+      double moment =
+        std::min(small_strain_stiffness() * rotation_b, 0.5 * (low + high));
       for (unsigned int iteration = 0; iteration < 200; ++iteration)
         {
           const double residual = rotation(moment) - rotation_b;
@@ -372,18 +378,18 @@ namespace verification
     {
       shear_at(moment, a);
       return -4. * M_PI / 3. * integrate_over_log_radius([&](const double r) {
-               const double gamma = shear_at(moment, r);
-               return w1(gamma) * gamma * gamma * r * r;
-             });
+        const double gamma = shear_at(moment, r);
+        return w1(gamma) * gamma * gamma * r * r;
+      });
     }
 
   private:
     static constexpr unsigned int n_points = 10;
     static constexpr unsigned int n_panels = 16;
-    static constexpr double eps = std::numeric_limits<double>::epsilon();
+    static constexpr double       eps = std::numeric_limits<double>::epsilon();
 
-    const double a, b, length, c10, c20, c30;
-    const double gamma_monotone;
+    const double                 a, b, length, c10, c20, c30;
+    const double                 gamma_monotone;
     std::array<double, n_points> points, weights;
 
     /** @f$\int_a^b f(r)/r\,dr = \int_{\ln a}^{\ln b} f(e^s)\,ds@f$. */
@@ -395,8 +401,8 @@ namespace verification
       double       sum = 0.;
       for (unsigned int panel = 0; panel < n_panels; ++panel)
         for (unsigned int i = 0; i < n_points; ++i)
-          sum += weights[i] *
-                 f(std::exp(s0 + h * (panel + 0.5 * (1. + points[i]))));
+          sum +=
+            weights[i] * f(std::exp(s0 + h * (panel + 0.5 * (1. + points[i]))));
       return 0.5 * h * sum;
     }
 
@@ -412,8 +418,7 @@ namespace verification
         return infinity; // only possible for C30 > 0: q > 0 everywhere
       // The root (-6 C20 - sqrt(disc)) / (30 C30) is the smaller positive
       // one if C30 > 0 and C20 < 0, and the only positive one if C30 < 0.
-      const double root =
-        (-6. * c20 - std::sqrt(discriminant)) / (30. * c30);
+      const double root = (-6. * c20 - std::sqrt(discriminant)) / (30. * c30);
       if (c30 > 0. && c20 >= 0.)
         return infinity; // both roots negative
       return std::sqrt(root);
