@@ -24,8 +24,10 @@
 // Built by extrusion with Layers: the radial line from a point (nodes at
 // exact fractions of b - a), four rotations by 90 degrees about the axis
 // (nodes at exact fractions of the angle, each a rotation of the radial
-// line's nodes), Coherence to merge the last radial line with the first,
-// then a translation along z.
+// line's nodes), the last radial line merged with the first (Gmsh's
+// default Geometry.AutoCoherence already merges the coinciding points;
+// Coherence makes it explicit; without either the annulus has a seam,
+// which the reader refuses), then a translation along z.
 DefineConstant[ n = 4 ];
 DefineConstant[ n_around = 8 * n ];
 DefineConstant[ n_z = 1 ];
