@@ -1,6 +1,7 @@
 #!/bin/bash
 # Regenerate every .msh of this folder from its .geo with Gmsh, as Gmsh's
-# ASCII format 2.2: bash parameter_files/meshes/regenerate.sh
+# ASCII format 2.2: bash parameter_files/meshes/regenerate.sh (a .geo
+# listed in 'variants' below gives one .msh per resolution)
 #
 # The shipped files were made with Debian 12's gmsh 4.8.4 (apt-get install
 # gmsh); with it, the output is byte-identical (check with git diff).
@@ -24,17 +25,40 @@ fi
 home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
 
-for geo in *.geo; do
-  msh="${geo%.geo}.msh"
+# The verification meshes come from one .geo each at several resolutions:
+# the values of its parameter n, each written to NAME_N.msh.
+declare -A variants=(
+  [tube]="4 8 16"
+  [cook_membrane]="2 4 8 16 32 64"
+  [compression_block]="4 8"
+)
+
+# mesh GEO MSH [gmsh options...]
+mesh() {
+  local geo=$1 msh=$2
+  shift 2
+  local log
   log=$(HOME="$home" gmsh "$geo" -3 -nopopup -v 4 -nt 1 \
     -format msh22 \
     -setnumber Mesh.Binary 0 \
     -setnumber Mesh.SaveAll 0 \
     -setnumber Mesh.SaveParametric 0 \
+    "$@" \
     -o "$msh" 2>&1) || { echo "$log" >&2; exit 1; }
   if grep -q "Error" <<< "$log"; then
     echo "$log" >&2
     exit 1
   fi
   echo "$msh: $(grep -o '[0-9]* nodes [0-9]* elements' <<< "$log" | tail -1)"
+}
+
+for geo in *.geo; do
+  name="${geo%.geo}"
+  if [ -n "${variants[$name]+set}" ]; then
+    for n in ${variants[$name]}; do
+      mesh "$geo" "${name}_${n}.msh" -setnumber n "$n"
+    done
+  else
+    mesh "$geo" "$name.msh"
+  fi
 done
