@@ -189,7 +189,8 @@ namespace rubberdyn
       /**
        * Work done on the solid through the body where its motion is
        * prescribed (held or driven directions): minus the solid's force on
-       * the body times the body's displacement (J).
+       * the body times the body's displacement, by the trapezoidal rule per
+       * step like the constraints' work (J).
        */
       double drive_work = 0.;
     };
@@ -504,6 +505,12 @@ namespace rubberdyn
        */
       std::vector<double>     group_gravity_increment;
       std::vector<BodyEnergy> body_energy;
+      /**
+       * Each body's displacement in its prescribed directions in the last
+       * step (0 in the free ones), for the second half of the drive's
+       * trapezoidal work.
+       */
+      std::vector<Tensor<1, 3>> drive_increment;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
       /** Gravity work of the last displacement update, booked next step. */
