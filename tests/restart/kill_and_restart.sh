@@ -3,7 +3,9 @@
 # in a row), writes exactly the uninterrupted run's time_history.csv, byte
 # for byte, on 2 ranks, with a fixed boundary (the drop-test cylinder's
 # base), mass scaling and a rigid plate pressing and sliding on its top
-# with friction; both restarts keep their ParaView series; a truncated
+# with friction, the first restart from a checkpoint left under its old
+# name by a kill between the renames of its switch; both restarts keep their
+# ParaView series; a truncated
 # checkpoint and one whose pieces belong to different steps are refused,
 # naming the file or the steps.
 # Usage: kill_and_restart.sh EXECUTABLE SOURCE_DIR
@@ -82,7 +84,19 @@ run_and_kill() {
 run full
 run_and_kill part 1.5 1.2
 cp -r part/checkpoint early_checkpoint
+# The first kill as if it had struck between the two renames of a
+# checkpoint switch (doc/restarts.md): the complete checkpoint at 1.2 ms
+# under checkpoint.old/, an unfinished checkpoint.new/ (one piece, no
+# study.txt), no checkpoint/. The restart must take checkpoint.old/ (a
+# refusal would leave no part/checkpoint/study.txt at 2.4 ms below, and the
+# rows would differ).
+mv part/checkpoint part/checkpoint.old
+mkdir -p part/checkpoint.new
+head -c 100 part/checkpoint.old/rank_0.bin > part/checkpoint.new/rank_0.bin
 run_and_kill resume 2.7 2.4
+[ ! -e part/checkpoint.old ] ||
+  { echo "part/checkpoint.old was left behind by the next checkpoint"; exit 1; }
+echo "restarted from checkpoint.old after a kill between the renames"
 run resume
 grep -q "Restarted from the checkpoint at t = " resume.log ||
   { echo "the second run did not restart:"; cat resume.log; exit 1; }
