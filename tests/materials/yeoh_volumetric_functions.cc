@@ -15,7 +15,12 @@
 //     next term being K (J - ...) ~ 1e-12 K), while the logarithmic ones
 //     match their closed forms (K/2) ln^2 J and (K/4)(J^2 - 1 - 2 ln J) to
 //     1e-12 relative, which grow without bound, and increase monotonically
-//     as J decreases to 1e-12 (where U/K = 382 and 13.6).
+//     as J decreases to 1e-12 (where U/K = 382 and 13.6). Beyond J = e,
+//     log squared has J^2 U'' = K(1 - ln J) < 0; the wave-speed bound must
+//     then take max(J^2 U'', 0) (doc/theory.md, section 4): at F = 4^(1/3) I
+//     the isochoric part vanishes and rho c^2 = 4G/3 exactly (to 1e-12),
+//     in the scalar law and in the batched kernel (without the max it would
+//     be K(1 - ln 4) + 4G/3 < 0, a zero wave speed and no step limit).
 // (3) Uniaxial stress, lambda from 1 down to 0.2 and up to 2, at K/G = 1000
 //     and K/G = 10 (the library's Newton solver for the lateral stretch,
 //     stepping from the previous state as the Material point study does):
@@ -36,6 +41,7 @@
 
 #include <rubberdyn/materials/homogeneous_deformation.h>
 #include <rubberdyn/materials/material_registry.h>
+#include <rubberdyn/materials/stress_kernel.h>
 #include <rubberdyn/materials/yeoh.h>
 
 #include <array>
@@ -174,6 +180,33 @@ main()
           }
         out() << std::endl;
       }
+  }
+
+  // (2b) The wave speed of log squared beyond J = e.
+  {
+    const double K   = 1000. * G;
+    const auto   law = create_law(K, VolumetricFunction::log_squared);
+    const double a   = std::cbrt(4.);
+    MaterialResponse<3> response;
+    law->evaluate(a * Tensor<2, 3>(unit_symmetric_tensor<3>()), {}, {}, false,
+                  response);
+    constexpr unsigned int N = StressKernel::batch_size;
+    double F[9 * N] = {}, tau[6 * N], energy[N], wave_speed[N];
+    for (unsigned int i = 0; i < N; ++i)
+      F[0 * N + i] = F[4 * N + i] = F[8 * N + i] = a;
+    const auto kernel = create_stress_kernel(*law);
+    check(kernel->evaluate(N, F, nullptr, nullptr, tau, energy, wave_speed) ==
+            N,
+          "kernel evaluates J = 4");
+    const double c_exact = std::sqrt(4. / 3. * G / density);
+    const double errors[2] = {
+      std::abs(response.dilatational_wave_speed - c_exact) / c_exact,
+      std::abs(wave_speed[0] - c_exact) / c_exact};
+    out() << "\n(2b) log squared at J = 4: rho c^2 = 4G/3, relative error "
+             "of c: law "
+          << sci(errors[0]) << ", kernel " << sci(errors[1]) << std::endl;
+    check(errors[0] < 1e-12 && errors[1] < 1e-12,
+          "log squared beyond J = e: wave speed from max(J^2 U'', 0)");
   }
 
   // (3) Uniaxial stress.
