@@ -140,7 +140,7 @@ namespace rubberdyn
         }
       if (volumetric_function != VolumetricFunction::polynomial &&
           (d[1] != 0. || d[2] != 0.))
-        throw InputError("D2",
+        throw InputError(d[1] != 0. ? "D2" : "D3",
                          "D2 and D3 must be 0 with the volumetric function '" +
                            volumetric_function_name(volumetric_function) +
                            "', which takes only K = 2/D1");
@@ -194,7 +194,8 @@ namespace rubberdyn
           // higher terms rather than drop them silently.
           if (volumetric_function != VolumetricFunction::polynomial &&
               (prm.get_double("D2") != 0. || prm.get_double("D3") != 0.))
-            throw InputError(path + "/D2",
+            throw InputError(path + (prm.get_double("D2") != 0. ? "/D2" :
+                                                                   "/D3"),
                              "D2 and D3 must be 0 with 'Volumetric function "
                              "= " +
                                volumetric_function_name(volumetric_function) +
