@@ -78,12 +78,15 @@ main()
       F[4 * N + i] = F[8 * N + i] = 0.995;
       F[1 * N + i]                = 0.01;
     }
-  for (const VolumetricFunction function :
-       {VolumetricFunction::polynomial, VolumetricFunction::log_squared,
-        VolumetricFunction::simo_taylor})
+  for (const VolumetricFunction function : {VolumetricFunction::polynomial,
+                                            VolumetricFunction::log_squared,
+                                            VolumetricFunction::simo_taylor})
     {
-      const Yeoh<3> law(0.55e-3, -0.05e-3, 0.015e-3,
-                        std::array<double, 3>{{3.6, 0., 0.}}, 1.1e-6,
+      const Yeoh<3>      law(0.55e-3,
+                        -0.05e-3,
+                        0.015e-3,
+                        std::array<double, 3>{{3.6, 0., 0.}},
+                        1.1e-6,
                         function);
       const auto         kernel  = create_stress_kernel(law);
       const unsigned int batches = 200000;
@@ -92,8 +95,13 @@ main()
       for (unsigned int b = 0; b < batches; ++b)
         {
           F[0] += 1e-12;
-          kernel->evaluate(N, F.data(), nullptr, nullptr, tau.data(),
-                           energy.data(), wave_speed.data());
+          kernel->evaluate(N,
+                           F.data(),
+                           nullptr,
+                           nullptr,
+                           tau.data(),
+                           energy.data(),
+                           wave_speed.data());
           sink += tau[0];
         }
       const double ns = std::chrono::duration<double, std::nano>(

@@ -194,8 +194,8 @@ namespace rubberdyn
           // higher terms rather than drop them silently.
           if (volumetric_function != VolumetricFunction::polynomial &&
               (prm.get_double("D2") != 0. || prm.get_double("D3") != 0.))
-            throw InputError(path + (prm.get_double("D2") != 0. ? "/D2" :
-                                                                   "/D3"),
+            throw InputError(path +
+                               (prm.get_double("D2") != 0. ? "/D2" : "/D3"),
                              "D2 and D3 must be 0 with 'Volumetric function "
                              "= " +
                                volumetric_function_name(volumetric_function) +
@@ -334,8 +334,7 @@ namespace rubberdyn
           << " GPa, C20 = " << format_short(C20)
           << " GPa, C30 = " << format_short(C30)
           << " GPa, G = " << format_short(shear_modulus())
-          << " GPa, K = " << format_short(bulk_modulus())
-          << " GPa, D1 = "
+          << " GPa, K = " << format_short(bulk_modulus()) << " GPa, D1 = "
           << format_short(inverse_d[0] > 0 ? 1. / inverse_d[0] : 0.)
           << " 1/GPa, density = " << format_short(rho)
           << " kg/mm^3, wave speed = " << format_short(reference_wave_speed())
@@ -391,9 +390,9 @@ namespace rubberdyn
       if (volumetric_function == VolumetricFunction::polynomial)
         {
           // U(J) = sum_k (1/d_k)(J-1)^(2k) and its derivatives.
-          const double y  = J - 1.;
-          double       dU = 0.;
-          double       d2U = 0.;
+          const double y       = J - 1.;
+          double       dU      = 0.;
+          double       d2U     = 0.;
           double       y_power = 1.; // y^(2k-2)
           for (unsigned int k = 1; k <= 3; ++k)
             {
@@ -412,9 +411,13 @@ namespace rubberdyn
           const VolumetricValues v =
             (volumetric_function == VolumetricFunction::log_squared ?
                logarithmic_volumetric_values<VolumetricFunction::log_squared>(
-                 J, std::log(J), K) :
+                 J,
+                 std::log(J),
+                 K) :
                logarithmic_volumetric_values<VolumetricFunction::simo_taylor>(
-                 J, std::log(J), K));
+                 J,
+                 std::log(J),
+                 K));
           U       = v.U;
           tau_vol = v.J_dU;
           J2_d2U  = v.J2_d2U;
@@ -439,8 +442,9 @@ namespace rubberdyn
       if (compute_tangent)
         response.spatial_tangent =
           2. * mu_bar * Tensors::dev_P -
-          2. / 3. * (outer_product(tau_iso, Tensors::I) +
-                     outer_product(Tensors::I, tau_iso)) +
+          2. / 3. *
+            (outer_product(tau_iso, Tensors::I) +
+             outer_product(Tensors::I, tau_iso)) +
           4. * W2 * outer_product(dev_b_bar, dev_b_bar) +
           (tau_vol + J2_d2U) * Tensors::IxI - 2. * tau_vol * Tensors::S;
     }

@@ -19,16 +19,16 @@ namespace rubberdyn
       template <VolumetricFunction volumetric_function>
       inline __attribute__((always_inline)) void
       yeoh_points_loop(const double C10,
-                  const double C20,
-                  const double C30,
-                  const double a1,
-                  const double a2,
-                  const double a3,
-                  const double inverse_density,
-                  const double *__restrict F,
-                  double *__restrict tau,
-                  double *__restrict energy,
-                  double *__restrict wave_speed)
+                       const double C20,
+                       const double C30,
+                       const double a1,
+                       const double a2,
+                       const double a3,
+                       const double inverse_density,
+                       const double *__restrict F,
+                       double *__restrict tau,
+                       double *__restrict energy,
+                       double *__restrict wave_speed)
       {
         const double infinity = std::numeric_limits<double>::infinity();
         const double nan      = std::numeric_limits<double>::quiet_NaN();
@@ -67,15 +67,13 @@ namespace rubberdyn
 
             // U, the Kirchhoff pressure tau_vol = J U' and J^2 U''.
             double U, tau_vol, J2_d2U;
-            if constexpr (volumetric_function ==
-                          VolumetricFunction::polynomial)
+            if constexpr (volumetric_function == VolumetricFunction::polynomial)
               {
                 // U = sum_k a_k (J-1)^(2k) and its derivatives.
                 const double y  = J - 1.;
                 const double y2 = y * y;
                 U               = y2 * (a1 + y2 * (a2 + y2 * a3));
-                const double dU =
-                  y * (2. * a1 + y2 * (4. * a2 + 6. * a3 * y2));
+                const double dU = y * (2. * a1 + y2 * (4. * a2 + 6. * a3 * y2));
                 const double d2U = 2. * a1 + y2 * (12. * a2 + 30. * a3 * y2);
                 tau_vol          = J * dU;
                 J2_d2U           = J * J * d2U;
@@ -85,7 +83,9 @@ namespace rubberdyn
                 // K = 2 a1.
                 const VolumetricValues v =
                   logarithmic_volumetric_values<volumetric_function>(
-                    J, simd_math::natural_log(J), 2. * a1);
+                    J,
+                    simd_math::natural_log(J),
+                    2. * a1);
                 U       = v.U;
                 tau_vol = v.J_dU;
                 J2_d2U  = v.J2_d2U;
@@ -147,19 +147,43 @@ namespace rubberdyn
         switch (volumetric_function)
           {
             case VolumetricFunction::polynomial:
-              yeoh_points_loop<VolumetricFunction::polynomial>(
-                C10, C20, C30, a1, a2, a3, inverse_density, F, tau, energy,
-                wave_speed);
+              yeoh_points_loop<VolumetricFunction::polynomial>(C10,
+                                                               C20,
+                                                               C30,
+                                                               a1,
+                                                               a2,
+                                                               a3,
+                                                               inverse_density,
+                                                               F,
+                                                               tau,
+                                                               energy,
+                                                               wave_speed);
               break;
             case VolumetricFunction::log_squared:
-              yeoh_points_loop<VolumetricFunction::log_squared>(
-                C10, C20, C30, a1, a2, a3, inverse_density, F, tau, energy,
-                wave_speed);
+              yeoh_points_loop<VolumetricFunction::log_squared>(C10,
+                                                                C20,
+                                                                C30,
+                                                                a1,
+                                                                a2,
+                                                                a3,
+                                                                inverse_density,
+                                                                F,
+                                                                tau,
+                                                                energy,
+                                                                wave_speed);
               break;
             case VolumetricFunction::simo_taylor:
-              yeoh_points_loop<VolumetricFunction::simo_taylor>(
-                C10, C20, C30, a1, a2, a3, inverse_density, F, tau, energy,
-                wave_speed);
+              yeoh_points_loop<VolumetricFunction::simo_taylor>(C10,
+                                                                C20,
+                                                                C30,
+                                                                a1,
+                                                                a2,
+                                                                a3,
+                                                                inverse_density,
+                                                                F,
+                                                                tau,
+                                                                energy,
+                                                                wave_speed);
               break;
           }
       }
@@ -167,10 +191,11 @@ namespace rubberdyn
 
 
 
-    YeohStressKernel::YeohStressKernel(const std::array<double, 3> &C,
-                                       const std::array<double, 3> &inverse_d,
-                                       const double                 density,
-                                       const VolumetricFunction volumetric_function)
+    YeohStressKernel::YeohStressKernel(
+      const std::array<double, 3> &C,
+      const std::array<double, 3> &inverse_d,
+      const double                 density,
+      const VolumetricFunction     volumetric_function)
       : C(C)
       , inverse_d(inverse_d)
       , density(density)
@@ -188,8 +213,17 @@ namespace rubberdyn
                                double *energy,
                                double *wave_speed) const
     {
-      yeoh_points(volumetric_function, C[0], C[1], C[2], inverse_d[0],
-                  inverse_d[1], inverse_d[2], 1. / density, F, tau, energy,
+      yeoh_points(volumetric_function,
+                  C[0],
+                  C[1],
+                  C[2],
+                  inverse_d[0],
+                  inverse_d[1],
+                  inverse_d[2],
+                  1. / density,
+                  F,
+                  tau,
+                  energy,
                   wave_speed);
       for (unsigned int i = 0; i < n; ++i)
         if (!(wave_speed[i] >= 0.))

@@ -25,23 +25,33 @@ void
 run()
 {
   std::vector<std::pair<std::string, std::shared_ptr<MaterialModel<dim>>>>
-    laws = {
-      {"Yeoh",
-       std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, 0.015e-3,
-                                   std::array<double, 3>{{3.6, 0., 0.}},
-                                   1.1e-6)},
-      {"Yeoh, log squared",
-       std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, 0.015e-3,
-                                   std::array<double, 3>{{3.6, 0., 0.}},
-                                   1.1e-6, VolumetricFunction::log_squared)},
-      {"Yeoh, Simo-Taylor",
-       std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, 0.015e-3,
-                                   std::array<double, 3>{{3.6, 0., 0.}},
-                                   1.1e-6, VolumetricFunction::simo_taylor)},
-      {"Elastic", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6)},
-      {"J2 plasticity",
-       std::make_shared<J2Plasticity<dim>>(
-         210., 0.3, 7.85e-6, HardeningCurve(0.94, {}, {}, "test"))}};
+    laws = {{"Yeoh",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6)},
+            {"Yeoh, log squared",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6,
+                                         VolumetricFunction::log_squared)},
+            {"Yeoh, Simo-Taylor",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6,
+                                         VolumetricFunction::simo_taylor)},
+            {"Elastic", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6)},
+            {"J2 plasticity",
+             std::make_shared<J2Plasticity<dim>>(
+               210.,
+               0.3,
+               7.85e-6,
+               HardeningCurve(0.94, {}, {}, "test"))}};
 
   std::vector<std::pair<std::string, Tensor<2, dim>>> gradients;
   Tensor<2, dim> F;

@@ -80,29 +80,46 @@ main()
     check(simd_math::natural_log(1.) == 0., "natural_log(1) = 0");
   }
 
-  std::vector<std::pair<std::string, std::shared_ptr<materials::MaterialModel<3>>>>
-    laws = {
-      {"Yeoh, K only",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.015e-3, std::array<double, 3>{{1.2, 0., 0.}},
-         1.1e-6)},
-      {"Yeoh, D1..D3",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.95e-3, std::array<double, 3>{{1.2, 0.3, 0.05}},
-         1.1e-6)},
-      {"Yeoh, log squared",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.015e-3, std::array<double, 3>{{1.2, 0., 0.}},
-         1.1e-6, materials::VolumetricFunction::log_squared)},
-      {"Yeoh, Simo-Taylor",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.95e-3, std::array<double, 3>{{1.2, 0., 0.}},
-         1.1e-6, materials::VolumetricFunction::simo_taylor)},
-      {"Elastic", std::make_shared<materials::Elastic<3>>(210., 0.3, 7.85e-6)},
-      {"J2 plasticity",
-       std::make_shared<materials::J2Plasticity<3>>(
-         70., 0.33, 2.7e-6,
-         materials::HardeningCurve(0.2, {0.1}, {0.3}, "test"))}};
+  std::vector<
+    std::pair<std::string, std::shared_ptr<materials::MaterialModel<3>>>>
+    laws = {{"Yeoh, K only",
+             std::make_shared<materials::Yeoh<3>>(0.55e-3,
+                                                  -0.05e-3,
+                                                  0.015e-3,
+                                                  std::array<double, 3>{
+                                                    {1.2, 0., 0.}},
+                                                  1.1e-6)},
+            {"Yeoh, D1..D3",
+             std::make_shared<materials::Yeoh<3>>(0.55e-3,
+                                                  -0.05e-3,
+                                                  0.95e-3,
+                                                  std::array<double, 3>{
+                                                    {1.2, 0.3, 0.05}},
+                                                  1.1e-6)},
+            {"Yeoh, log squared",
+             std::make_shared<materials::Yeoh<3>>(
+               0.55e-3,
+               -0.05e-3,
+               0.015e-3,
+               std::array<double, 3>{{1.2, 0., 0.}},
+               1.1e-6,
+               materials::VolumetricFunction::log_squared)},
+            {"Yeoh, Simo-Taylor",
+             std::make_shared<materials::Yeoh<3>>(
+               0.55e-3,
+               -0.05e-3,
+               0.95e-3,
+               std::array<double, 3>{{1.2, 0., 0.}},
+               1.1e-6,
+               materials::VolumetricFunction::simo_taylor)},
+            {"Elastic",
+             std::make_shared<materials::Elastic<3>>(210., 0.3, 7.85e-6)},
+            {"J2 plasticity",
+             std::make_shared<materials::J2Plasticity<3>>(
+               70.,
+               0.33,
+               2.7e-6,
+               materials::HardeningCurve(0.2, {0.1}, {0.3}, "test"))}};
 
   std::mt19937                           generator(7);
   std::uniform_real_distribution<double> entry(-0.5, 0.5);

@@ -17,8 +17,8 @@
 // also have the stress of their stored energy W: tau = P F^T with
 // P_ij = dW/dF_ij by central differences of W (h = 1e-6; same error budget,
 // relative to |tau|, and the same 1e-6; the energy's round-off divided
-// by h makes it the looser check, measured up to 2e-9). Yeoh is checked with each
-// volumetric function U(J) (polynomial, log squared, Simo-Taylor), near
+// by h makes it the looser check, measured up to 2e-9). Yeoh is checked with
+// each volumetric function U(J) (polynomial, log squared, Simo-Taylor), near
 // incompressibility and, at nu = 0.3, over J from 0.6 to 1.4, where the
 // three differ most.
 //
@@ -145,8 +145,7 @@ tangent_error(const MaterialModel<dim> &     material,
 // differences of the stored energy, relative to |tau|.
 template <int dim>
 double
-energy_stress_error(const MaterialModel<dim> &material,
-                    const Tensor<2, dim> &    F)
+energy_stress_error(const MaterialModel<dim> &material, const Tensor<2, dim> &F)
 {
   MaterialResponse<dim> response;
   material.evaluate(F, {}, {}, false, response);
@@ -163,8 +162,7 @@ energy_stress_error(const MaterialModel<dim> &material,
         P[i][j] =
           (plus.strain_energy_density - minus.strain_energy_density) / (2. * h);
       }
-  return (P * transpose(F) - Tensor<2, dim>(response.kirchhoff_stress))
-           .norm() /
+  return (P * transpose(F) - Tensor<2, dim>(response.kirchhoff_stress)).norm() /
          response.kirchhoff_stress.norm();
 }
 
@@ -223,40 +221,48 @@ run(std::ostream &log)
   // final bushing rubber (C30 = 0.95 MPa), a compressible rubber (nu = 0.3)
   // over a wide range of J, each with the three volumetric functions, and
   // an elastic steel.
-  const auto yeoh = [](const double C30, const double nu,
+  const auto yeoh = [](const double             C30,
+                       const double             nu,
                        const VolumetricFunction function) {
     const double G = 1.1e-3;
     const double K = 2. * G * (1. + nu) / (3. * (1. - 2. * nu));
-    return std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, C30,
+    return std::make_shared<Yeoh<dim>>(0.55e-3,
+                                       -0.05e-3,
+                                       C30,
                                        std::array<double, 3>{{2. / K, 0., 0.}},
-                                       1.1e-6, function);
+                                       1.1e-6,
+                                       function);
   };
   std::vector<Case> cases;
-  for (const VolumetricFunction function :
-       {VolumetricFunction::polynomial, VolumetricFunction::log_squared,
-        VolumetricFunction::simo_taylor})
+  for (const VolumetricFunction function : {VolumetricFunction::polynomial,
+                                            VolumetricFunction::log_squared,
+                                            VolumetricFunction::simo_taylor})
     {
-      const std::string suffix =
-        (function == VolumetricFunction::polynomial ?
-           "" :
-           ", " + volumetric_function_name(function));
-      cases.push_back({"Yeoh nu = 0.49" + suffix,
-                       yeoh(0.015e-3, 0.49, function), 0.4});
-      cases.push_back({"Yeoh nu = 0.499" + suffix,
-                       yeoh(0.015e-3, 0.499, function), 0.4});
-      cases.push_back({"Yeoh C30 = 0.95 MPa" + suffix,
-                       yeoh(0.95e-3, 0.499, function), 0.4});
+      const std::string suffix = (function == VolumetricFunction::polynomial ?
+                                    "" :
+                                    ", " + volumetric_function_name(function));
+      cases.push_back(
+        {"Yeoh nu = 0.49" + suffix, yeoh(0.015e-3, 0.49, function), 0.4});
+      cases.push_back(
+        {"Yeoh nu = 0.499" + suffix, yeoh(0.015e-3, 0.499, function), 0.4});
+      cases.push_back(
+        {"Yeoh C30 = 0.95 MPa" + suffix, yeoh(0.95e-3, 0.499, function), 0.4});
       // J = 1 +- 0.4.
       cases.push_back({"Yeoh nu = 0.3, J in [0.6, 1.4]" + suffix,
-                       yeoh(0.015e-3, 0.3, function), 0.4, 1.});
+                       yeoh(0.015e-3, 0.3, function),
+                       0.4,
+                       1.});
     }
-  cases.push_back({"Yeoh d1, d2, d3",
-                   std::make_shared<Yeoh<dim>>(
-                     0.55e-3, -0.05e-3, 0.015e-3,
-                     std::array<double, 3>{{2e-3, 1e-2, 5e-2}}, 1.1e-6),
-                   0.4});
-  cases.push_back({"Elastic steel",
-                   std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6), 0.3});
+  cases.push_back(
+    {"Yeoh d1, d2, d3",
+     std::make_shared<Yeoh<dim>>(0.55e-3,
+                                 -0.05e-3,
+                                 0.015e-3,
+                                 std::array<double, 3>{{2e-3, 1e-2, 5e-2}},
+                                 1.1e-6),
+     0.4});
+  cases.push_back(
+    {"Elastic steel", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6), 0.3});
   for (const Case &c : cases)
     {
       double tangent = 0., objectivity = 0., energy = 0.;
@@ -276,8 +282,8 @@ run(std::ostream &log)
         I[i][i] = 1.;
       c.material->evaluate(I, {}, {}, false, at_rest);
       log << "  " << c.name << ": tangent error " << sci(tangent)
-          << ", stress - dW/dF " << sci(energy)
-          << ", objectivity error " << sci(objectivity)
+          << ", stress - dW/dF " << sci(energy) << ", objectivity error "
+          << sci(objectivity)
           << ", |tau(I)| = " << at_rest.kirchhoff_stress.norm()
           << ", W(I) = " << at_rest.strain_energy_density << std::endl;
       check(tangent < 1e-6, c.name + ": tangent within 1e-6");

@@ -1,7 +1,8 @@
 // Yeoh rubber under homogeneous deformations against closed forms.
 //
 // (1) The compressible law against its own closed form in principal
-//     stretches: with J = l1 l2 l3, bbar_i = J^(-2/3) l_i^2, I1bar = sum bbar_i,
+//     stretches: with J = l1 l2 l3, bbar_i = J^(-2/3) l_i^2, I1bar = sum
+//     bbar_i,
 //       tau_i = J U'(J) + 2 W'(I1bar) (bbar_i - I1bar/3)
 //     (push-forward of eq. 3.17 of the reference study), evaluated here
 //     without tensors. The lateral stretch is found by bisection on this
@@ -221,73 +222,77 @@ main()
   };
 
   double max_error = 0.;
-  for (const VolumetricFunction f :
-       {VolumetricFunction::polynomial, VolumetricFunction::log_squared,
-        VolumetricFunction::simo_taylor})
-  {
-    function = f;
-    out() << "\n(1) compressible closed form, nu = 0.499"
-          << (f == VolumetricFunction::polynomial ?
-                "" :
-                ", volumetric function " + volumetric_function_name(f))
-          << " (max relative error)" << std::endl;
-    const double  K = bulk_modulus(0.499);
-    const Yeoh<3> material(C10, C20, C30, {{2. / K, 0., 0.}}, 1.1e-6, f);
-    for (const auto &mode : modes)
-      for (const double l : loads(mode.first))
+  for (const VolumetricFunction f : {VolumetricFunction::polynomial,
+                                     VolumetricFunction::log_squared,
+                                     VolumetricFunction::simo_taylor})
+    {
+      function = f;
+      out() << "\n(1) compressible closed form, nu = 0.499"
+            << (f == VolumetricFunction::polynomial ?
+                  "" :
+                  ", volumetric function " + volumetric_function_name(f))
+            << " (max relative error)" << std::endl;
+      const double  K = bulk_modulus(0.499);
+      const Yeoh<3> material(C10, C20, C30, {{2. / K, 0., 0.}}, 1.1e-6, f);
+      for (const auto &mode : modes)
+        for (const double l : loads(mode.first))
+          {
+            const double mu = lateral_stretch(mode.first, l, K);
+            const double error =
+              closed_form_error(material, stretches(mode.first, l, mu), K);
+            max_error = std::max(max_error, error);
+            out() << mode.second << " stretch " << l << ": error " << sci(error)
+                  << std::endl;
+          }
+      // Simple shear F = I + g e1 x e2: J = 1, I1 = 3 + g^2, and
+      // tau = 2 W' dev(b) with b = F F^T; in particular tau_12 = 2 W' g.
+      for (const double g : {0.2, 1., 2.})
         {
-          const double mu    = lateral_stretch(mode.first, l, K);
-          const double error = closed_form_error(
-            material, stretches(mode.first, l, mu), K);
+          Tensor<2, 3> F = unit_symmetric_tensor<3>();
+          F[0][1]        = g;
+          MaterialResponse<3> response;
+          material.evaluate(F, {}, {}, false, response);
+          const double W1  = W1_of(3. + g * g);
+          const double t12 = 2. * W1 * g;
+          const double t11 = 2. * W1 * (1. + g * g - (3. + g * g) / 3.);
+          const double t22 = 2. * W1 * (1. - (3. + g * g) / 3.);
+          const double error =
+            std::max({std::abs(response.kirchhoff_stress[0][1] - t12),
+                      std::abs(response.kirchhoff_stress[0][0] - t11),
+                      std::abs(response.kirchhoff_stress[1][1] - t22),
+                      std::abs(response.kirchhoff_stress[2][2] - t22)}) /
+            std::abs(t11);
           max_error = std::max(max_error, error);
-          out() << mode.second << " stretch " << l << ": error "
-                << sci(error) << std::endl;
+          out() << "simple shear g = " << g << ": error " << sci(error)
+                << std::endl;
         }
-    // Simple shear F = I + g e1 x e2: J = 1, I1 = 3 + g^2, and
-    // tau = 2 W' dev(b) with b = F F^T; in particular tau_12 = 2 W' g.
-    for (const double g : {0.2, 1., 2.})
-      {
-        Tensor<2, 3> F = unit_symmetric_tensor<3>();
-        F[0][1]        = g;
-        MaterialResponse<3> response;
-        material.evaluate(F, {}, {}, false, response);
-        const double W1  = W1_of(3. + g * g);
-        const double t12 = 2. * W1 * g;
-        const double t11 = 2. * W1 * (1. + g * g - (3. + g * g) / 3.);
-        const double t22 = 2. * W1 * (1. - (3. + g * g) / 3.);
-        const double error =
-          std::max({std::abs(response.kirchhoff_stress[0][1] - t12),
-                    std::abs(response.kirchhoff_stress[0][0] - t11),
-                    std::abs(response.kirchhoff_stress[1][1] - t22),
-                    std::abs(response.kirchhoff_stress[2][2] - t22)}) /
-          std::abs(t11);
-        max_error = std::max(max_error, error);
-        out() << "simple shear g = " << g << ": error " << sci(error)
-              << std::endl;
-      }
-    // Pure dilatation F = a I: tau = J U'(J) I, W = U(J).
-    for (const double a : {0.98, 0.995, 1.01})
-      {
-        MaterialResponse<3> response;
-        material.evaluate(a * Tensor<2, 3>(unit_symmetric_tensor<3>()),
-                          {}, {}, false, response);
-        const double J     = a * a * a;
-        const double p     = pressure_of(J, K);
-        double       error = 0.;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            error = std::max(error,
-                             std::abs(response.kirchhoff_stress[i][j] -
-                                      (i == j ? p : 0.)) /
-                               std::abs(p));
-        const double W_exact = U_of(J, K);
-        error = std::max(error, std::abs(response.strain_energy_density -
-                                         W_exact) / W_exact);
-        max_error = std::max(max_error, error);
-        out() << "dilatation a = " << a << ": error " << sci(error)
-              << std::endl;
-      }
-  }
+      // Pure dilatation F = a I: tau = J U'(J) I, W = U(J).
+      for (const double a : {0.98, 0.995, 1.01})
+        {
+          MaterialResponse<3> response;
+          material.evaluate(a * Tensor<2, 3>(unit_symmetric_tensor<3>()),
+                            {},
+                            {},
+                            false,
+                            response);
+          const double J     = a * a * a;
+          const double p     = pressure_of(J, K);
+          double       error = 0.;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              error = std::max(error,
+                               std::abs(response.kirchhoff_stress[i][j] -
+                                        (i == j ? p : 0.)) /
+                                 std::abs(p));
+          const double W_exact = U_of(J, K);
+          error                = std::max(error,
+                           std::abs(response.strain_energy_density - W_exact) /
+                             W_exact);
+          max_error            = std::max(max_error, error);
+          out() << "dilatation a = " << a << ": error " << sci(error)
+                << std::endl;
+        }
+    }
   check(max_error < 1e-12, "closed forms to round-off (1e-12)");
   out() << "largest relative error < 1e-12: yes" << std::endl;
 

@@ -118,8 +118,9 @@ main()
               << sci(errors[0]) << ", " << sci(errors[1]) << ", "
               << sci(errors[2]) << ", " << sci(errors[3]) << std::endl;
         for (const double e : errors)
-          check(e < 1e-12, volumetric_function_name(function) +
-                             ": small-strain K and wave speed to 1e-12");
+          check(e < 1e-12,
+                volumetric_function_name(function) +
+                  ": small-strain K and wave speed to 1e-12");
       }
   }
 
@@ -131,10 +132,22 @@ main()
     std::vector<std::unique_ptr<MaterialModel<3>>> laws;
     for (const VolumetricFunction function : functions)
       laws.push_back(create_law(K, function));
-    const std::vector<double> Js = {1e-12, 1e-9, 1e-6, 1e-3, 0.01, 0.1, 0.25,
-                                    0.5,   0.75, 0.9,  1.,   1.1,  1.25, 1.5,
-                                    2.};
-    std::array<double, 3> previous = {{0., 0., 0.}};
+    const std::vector<double> Js       = {1e-12,
+                                          1e-9,
+                                          1e-6,
+                                          1e-3,
+                                          0.01,
+                                          0.1,
+                                          0.25,
+                                          0.5,
+                                          0.75,
+                                          0.9,
+                                          1.,
+                                          1.1,
+                                          1.25,
+                                          1.5,
+                                          2.};
+    std::array<double, 3>     previous = {{0., 0., 0.}};
     for (unsigned int n = 0; n < Js.size(); ++n)
       {
         const double J = Js[n];
@@ -144,7 +157,10 @@ main()
             MaterialResponse<3> response;
             laws[f]->evaluate(std::cbrt(J) *
                                 Tensor<2, 3>(unit_symmetric_tensor<3>()),
-                              {}, {}, false, response);
+                              {},
+                              {},
+                              false,
+                              response);
             // W = U exactly: the isochoric part of a dilatation is zero.
             const double U = response.strain_energy_density;
             out() << ", " << U / K;
@@ -153,8 +169,7 @@ main()
                 if (J == 1e-12)
                   check(std::abs(U - K / 2.) < 1e-11 * K,
                         "polynomial: U(J -> 0) = 1/d1 = K/2, finite");
-                check(U <= K / 2. || J > 1.,
-                      "polynomial: U <= K/2 on (0, 1]");
+                check(U <= K / 2. || J > 1., "polynomial: U <= K/2 on (0, 1]");
               }
             else
               {
@@ -184,21 +199,24 @@ main()
 
   // (2b) The wave speed of log squared beyond J = e.
   {
-    const double K   = 1000. * G;
-    const auto   law = create_law(K, VolumetricFunction::log_squared);
-    const double a   = std::cbrt(4.);
+    const double        K   = 1000. * G;
+    const auto          law = create_law(K, VolumetricFunction::log_squared);
+    const double        a   = std::cbrt(4.);
     MaterialResponse<3> response;
-    law->evaluate(a * Tensor<2, 3>(unit_symmetric_tensor<3>()), {}, {}, false,
+    law->evaluate(a * Tensor<2, 3>(unit_symmetric_tensor<3>()),
+                  {},
+                  {},
+                  false,
                   response);
-    constexpr unsigned int N = StressKernel::batch_size;
-    double F[9 * N] = {}, tau[6 * N], energy[N], wave_speed[N];
+    constexpr unsigned int N        = StressKernel::batch_size;
+    double                 F[9 * N] = {}, tau[6 * N], energy[N], wave_speed[N];
     for (unsigned int i = 0; i < N; ++i)
       F[0 * N + i] = F[4 * N + i] = F[8 * N + i] = a;
     const auto kernel = create_stress_kernel(*law);
     check(kernel->evaluate(N, F, nullptr, nullptr, tau, energy, wave_speed) ==
             N,
           "kernel evaluates J = 4");
-    const double c_exact = std::sqrt(4. / 3. * G / density);
+    const double c_exact   = std::sqrt(4. / 3. * G / density);
     const double errors[2] = {
       std::abs(response.dilatational_wave_speed - c_exact) / c_exact,
       std::abs(wave_speed[0] - c_exact) / c_exact};
@@ -215,8 +233,8 @@ main()
         << std::endl;
   const std::vector<double> K_over_G = {1000., 10.};
   // The printed stretches; the path steps by 0.01 from 1.
-  const std::vector<double> printed = {0.2, 0.3,  0.4, 0.5, 0.6, 0.7, 0.8,
-                                       0.9, 0.95, 1.05, 1.1, 1.25, 1.5, 2.};
+  const std::vector<double> printed =
+    {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.05, 1.1, 1.25, 1.5, 2.};
   std::vector<std::vector<double>> spread(K_over_G.size(),
                                           std::vector<double>(printed.size()));
   for (unsigned int r = 0; r < K_over_G.size(); ++r)
@@ -231,7 +249,8 @@ main()
 
       // results[f][p] = (J, P_11) at printed[p].
       std::vector<std::vector<std::pair<double, double>>> results(
-        3, std::vector<std::pair<double, double>>(printed.size()));
+        3,
+        std::vector<std::pair<double, double>>(printed.size()));
       for (unsigned int f = 0; f < 3; ++f)
         for (const int direction : {-1, 1})
           {
@@ -242,8 +261,13 @@ main()
               {
                 const double        l = 1. + direction * 0.01 * step;
                 MaterialResponse<3> response;
-                mu = hd::solve(*laws[f], hd::Mode::uniaxial_stress, l, mu, {},
-                               {}, response);
+                mu = hd::solve(*laws[f],
+                               hd::Mode::uniaxial_stress,
+                               l,
+                               mu,
+                               {},
+                               {},
+                               response);
                 for (unsigned int p = 0; p < printed.size(); ++p)
                   if (std::abs(printed[p] - l) < 1e-9)
                     results[f][p] = {l * mu * mu,

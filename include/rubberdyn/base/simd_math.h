@@ -94,18 +94,22 @@ namespace rubberdyn
 
       const double s = (m - 1.) / (m + 1.);
       const double z = s * s;
-      // sum_{n=1}^{10} z^n/(2n+1), by Horner.
-      const double series =
-        z * (1. / 3. +
-             z * (1. / 5. +
-                  z * (1. / 7. +
-                       z * (1. / 9. +
-                            z * (1. / 11. +
-                                 z * (1. / 13. +
-                                      z * (1. / 15. +
-                                           z * (1. / 17. +
-                                                z * (1. / 19. +
-                                                     z * (1. / 21.))))))))));
+      // sum_{n=1}^{10} z^n/(2n+1), by Horner (a fixed trip count: GCC
+      // unrolls it).
+      constexpr double coefficients[10] = {1. / 3.,
+                                           1. / 5.,
+                                           1. / 7.,
+                                           1. / 9.,
+                                           1. / 11.,
+                                           1. / 13.,
+                                           1. / 15.,
+                                           1. / 17.,
+                                           1. / 19.,
+                                           1. / 21.};
+      double           series           = coefficients[9];
+      for (int n = 8; n >= 0; --n)
+        series = coefficients[n] + z * series;
+      series *= z;
       // ln 2 split so that e * ln2_high is exact (|e| < 2^11).
       constexpr double ln2_high = 6.93147180369123816490e-01;
       constexpr double ln2_low  = 1.90821492927058770002e-10;

@@ -44,9 +44,9 @@ namespace rubberdyn
      * shear modulus through eq. 3.11 ($C_{10} = G/2$, $C_{20} = -G/20$,
      * $C_{30} = G/200$), or from a Shore A hardness through Gent's relation
      * (A. N. Gent, Trans. Inst. Rubber Ind. 34 (1958) 46-57):
-     * $E\,[\mathrm{MPa}] = 0.0981 (56 + 7.62336 S) / (0.137505 (254 - 2.54 S))$,
-     * $G = E/3$, then eq. 3.11. The volumetric term comes from the $d_k$, or
-     * from a bulk modulus $K$ ($d_1 = 2/K$, $d_2 = d_3 = \infty$), or from
+     * $E\,[\mathrm{MPa}] = 0.0981 (56 + 7.62336 S) / (0.137505 (254 - 2.54
+     * S))$, $G = E/3$, then eq. 3.11. The volumetric term comes from the $d_k$,
+     * or from a bulk modulus $K$ ($d_1 = 2/K$, $d_2 = d_3 = \infty$), or from
      * Poisson's ratio, $K = 2G(1+\nu)/(3(1-2\nu))$ with $G = 2C_{10}$.
      * Neo-Hooke is the special case $C_{20} = C_{30} = 0$.
      */
