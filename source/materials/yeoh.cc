@@ -66,6 +66,19 @@ namespace rubberdyn
         "from 'Poisson's ratio' (K = 2G(1+nu)/(3(1-2nu)), G = 2 C10, "
         "d1 = 2/K), from 'Bulk modulus' (d1 = 2/K), or from 'D1', 'D2', "
         "'D3' ('polynomial', eq. 3.16).");
+      prm.declare_entry(
+        "Volumetric function",
+        "polynomial",
+        Patterns::Selection(volumetric_function_names()),
+        "(Yeoh) Which volumetric energy U(J) (GPa): 'polynomial' is the "
+        "reference study's sum_k (1/d_k)(J-1)^(2k) (eq. 3.16), which stays "
+        "finite as J -> 0 (U(0) = sum_k 1/d_k: a point can be crushed with "
+        "finite work); 'log squared' is (K/2)(ln J)^2 and 'Simo-Taylor' is "
+        "(K/4)(J^2 - 1 - 2 ln J), both infinite as J -> 0 and as J -> "
+        "infinity. All three have the same small-strain bulk modulus K "
+        "(from 'Volumetric model'; K = 2/D1), hence the same wave speed and "
+        "stable step; they differ at finite volume change (doc/theory.md). "
+        "The logarithmic ones take no D2, D3.");
       prm.declare_entry("Bulk modulus",
                         "1.1",
                         Patterns::Double(0.),
@@ -107,11 +120,13 @@ namespace rubberdyn
                     const double                 C20,
                     const double                 C30,
                     const std::array<double, 3> &d,
-                    const double                 density)
+                    const double                 density,
+                    const VolumetricFunction     volumetric_function)
       : C10(C10)
       , C20(C20)
       , C30(C30)
       , rho(density)
+      , volumetric_function(volumetric_function)
     {
       require_positive(C10, "C10");
       require_positive(d[0], "D1");
@@ -123,6 +138,12 @@ namespace rubberdyn
                              "must not be negative");
           inverse_d[k] = (d[k] > 0. ? 1. / d[k] : 0.);
         }
+      if (volumetric_function != VolumetricFunction::polynomial &&
+          (d[1] != 0. || d[2] != 0.))
+        throw InputError(d[1] != 0. ? "D2" : "D3",
+                         "D2 and D3 must be 0 with the volumetric function '" +
+                           volumetric_function_name(volumetric_function) +
+                           "', which takes only K = 2/D1");
     }
 
 
@@ -164,9 +185,21 @@ namespace rubberdyn
 
       const double      G                = 2. * C10;
       const std::string volumetric_model = prm.get("Volumetric model");
-      inverse_d                          = {{0., 0., 0.}};
+      volumetric_function =
+        volumetric_function_from_name(prm.get("Volumetric function"));
+      inverse_d = {{0., 0., 0.}};
       if (volumetric_model == "polynomial")
         {
+          // The logarithmic functions have one constant, K = 2/D1: refuse
+          // higher terms rather than drop them silently.
+          if (volumetric_function != VolumetricFunction::polynomial &&
+              (prm.get_double("D2") != 0. || prm.get_double("D3") != 0.))
+            throw InputError(path +
+                               (prm.get_double("D2") != 0. ? "/D2" : "/D3"),
+                             "D2 and D3 must be 0 with 'Volumetric function "
+                             "= " +
+                               volumetric_function_name(volumetric_function) +
+                               "', which takes only K = 2/D1");
           const char *names[3] = {"D1", "D2", "D3"};
           for (unsigned int k = 0; k < 3; ++k)
             {
@@ -301,12 +334,17 @@ namespace rubberdyn
           << " GPa, C20 = " << format_short(C20)
           << " GPa, C30 = " << format_short(C30)
           << " GPa, G = " << format_short(shear_modulus())
-          << " GPa, K = " << format_short(bulk_modulus())
-          << " GPa, D1 = "
+          << " GPa, K = " << format_short(bulk_modulus()) << " GPa, D1 = "
           << format_short(inverse_d[0] > 0 ? 1. / inverse_d[0] : 0.)
           << " 1/GPa, density = " << format_short(rho)
           << " kg/mm^3, wave speed = " << format_short(reference_wave_speed())
-          << " mm/ms" << std::endl;
+          << " mm/ms";
+      // Only a non-default choice is named, so that the logs of existing
+      // studies stay as they were.
+      if (volumetric_function != VolumetricFunction::polynomial)
+        out << ", volumetric function " +
+                 volumetric_function_name(volumetric_function);
+      out << std::endl;
     }
 
 
@@ -316,7 +354,10 @@ namespace rubberdyn
     Yeoh<dim>::create_stress_kernel() const
     {
       return std::make_unique<YeohStressKernel>(
-        std::array<double, 3>{{C10, C20, C30}}, inverse_d, rho);
+        std::array<double, 3>{{C10, C20, C30}},
+        inverse_d,
+        rho,
+        volumetric_function);
     }
 
 
@@ -343,32 +384,57 @@ namespace rubberdyn
       const double W1 = C10 + 2. * C20 * x + 3. * C30 * x * x; // dW/dI1bar
       const double W2 = 2. * C20 + 6. * C30 * x; // d2W/dI1bar2
 
-      // Volumetric part U(J) = sum_k (1/d_k)(J-1)^(2k) and its derivatives.
-      const double y  = J - 1.;
-      double       U  = 0.;
-      double       dU = 0.;
-      double       d2U = 0.;
-      double       y_power = 1.; // y^(2k-2)
-      for (unsigned int k = 1; k <= 3; ++k)
+      // Volumetric part: U, the Kirchhoff pressure tau_vol = J U' and
+      // J^2 U'' (doc/theory.md, "Volumetric functions").
+      double U = 0., tau_vol = 0., J2_d2U = 0.;
+      if (volumetric_function == VolumetricFunction::polynomial)
         {
-          const double c = inverse_d[k - 1];
-          d2U += c * (2. * k) * (2. * k - 1.) * y_power;
-          dU += c * (2. * k) * y_power * y;
-          U += c * y_power * y * y;
-          y_power *= y * y;
+          // U(J) = sum_k (1/d_k)(J-1)^(2k) and its derivatives.
+          const double y       = J - 1.;
+          double       dU      = 0.;
+          double       d2U     = 0.;
+          double       y_power = 1.; // y^(2k-2)
+          for (unsigned int k = 1; k <= 3; ++k)
+            {
+              const double c = inverse_d[k - 1];
+              d2U += c * (2. * k) * (2. * k - 1.) * y_power;
+              dU += c * (2. * k) * y_power * y;
+              U += c * y_power * y * y;
+              y_power *= y * y;
+            }
+          tau_vol = J * dU;
+          J2_d2U  = J * J * d2U;
+        }
+      else
+        {
+          const double           K = 2. * inverse_d[0];
+          const VolumetricValues v =
+            (volumetric_function == VolumetricFunction::log_squared ?
+               logarithmic_volumetric_values<VolumetricFunction::log_squared>(
+                 J,
+                 std::log(J),
+                 K) :
+               logarithmic_volumetric_values<VolumetricFunction::simo_taylor>(
+                 J,
+                 std::log(J),
+                 K));
+          U       = v.U;
+          tau_vol = v.J_dU;
+          J2_d2U  = v.J2_d2U;
         }
 
       const SymmetricTensor<2, 3> tau_iso = 2. * W1 * dev_b_bar;
-      const double                tau_vol = J * dU; // Kirchhoff pressure
       response.kirchhoff_stress           = tau_vol * Tensors::I + tau_iso;
       response.strain_energy_density =
         x * (C10 + x * (C20 + x * C30)) + U;
 
       // Upper estimate of the largest longitudinal acoustic modulus, exact
-      // at F = I (K + 4G/3); see doc/theory.md.
+      // at F = I (K + 4G/3); see doc/theory.md. The volumetric part adds
+      // the eigenvalue max(J^2 U'', 0): J^2 U'' < 0 only for log squared
+      // beyond J = e.
       const double mu_bar = 2. / 3. * W1 * I1_bar;
       const double longitudinal_modulus =
-        J * J * d2U + 4. / 3. * std::abs(mu_bar) + tau_iso.norm() +
+        std::max(J2_d2U, 0.) + 4. / 3. * std::abs(mu_bar) + tau_iso.norm() +
         4. * std::max(W2, 0.) * dev_b_bar.norm() * dev_b_bar.norm();
       response.dilatational_wave_speed =
         std::sqrt(std::max(longitudinal_modulus, 0.) / rho);
@@ -376,10 +442,11 @@ namespace rubberdyn
       if (compute_tangent)
         response.spatial_tangent =
           2. * mu_bar * Tensors::dev_P -
-          2. / 3. * (outer_product(tau_iso, Tensors::I) +
-                     outer_product(Tensors::I, tau_iso)) +
+          2. / 3. *
+            (outer_product(tau_iso, Tensors::I) +
+             outer_product(Tensors::I, tau_iso)) +
           4. * W2 * outer_product(dev_b_bar, dev_b_bar) +
-          (tau_vol + J * J * d2U) * Tensors::IxI - 2. * tau_vol * Tensors::S;
+          (tau_vol + J2_d2U) * Tensors::IxI - 2. * tau_vol * Tensors::S;
     }
 
 
@@ -409,7 +476,8 @@ namespace rubberdyn
       Yeoh,
       "Yeoh",
       "nearly incompressible Yeoh rubber, W = sum_i Ci0 (I1bar-3)^i + sum_k "
-      "(1/d_k)(J-1)^(2k) (reference study eq. 3.16)")
+      "(1/d_k)(J-1)^(2k) (reference study eq. 3.16), or with (K/2)(ln J)^2 "
+      "or (K/4)(J^2-1-2 ln J) as the volumetric term")
   } // namespace materials
 } // namespace rubberdyn
 

@@ -1,7 +1,8 @@
 // Every law refuses an inverted material point (det F <= 0) with the
 // specific InvertedMaterialError that solvers catch and report, and never
 // returns NaNs. Checked for det F = 0, det F < 0 (a reflection) and a NaN
-// entry, in 3D and in plane strain.
+// entry, in 3D and in plane strain; Yeoh with each volumetric function
+// (the logarithmic ones must not take the log of a non-positive J).
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/hardening_curve.h>
@@ -24,15 +25,33 @@ void
 run()
 {
   std::vector<std::pair<std::string, std::shared_ptr<MaterialModel<dim>>>>
-    laws = {
-      {"Yeoh",
-       std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, 0.015e-3,
-                                   std::array<double, 3>{{3.6, 0., 0.}},
-                                   1.1e-6)},
-      {"Elastic", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6)},
-      {"J2 plasticity",
-       std::make_shared<J2Plasticity<dim>>(
-         210., 0.3, 7.85e-6, HardeningCurve(0.94, {}, {}, "test"))}};
+    laws = {{"Yeoh",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6)},
+            {"Yeoh, log squared",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6,
+                                         VolumetricFunction::log_squared)},
+            {"Yeoh, Simo-Taylor",
+             std::make_shared<Yeoh<dim>>(0.55e-3,
+                                         -0.05e-3,
+                                         0.015e-3,
+                                         std::array<double, 3>{{3.6, 0., 0.}},
+                                         1.1e-6,
+                                         VolumetricFunction::simo_taylor)},
+            {"Elastic", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6)},
+            {"J2 plasticity",
+             std::make_shared<J2Plasticity<dim>>(
+               210.,
+               0.3,
+               7.85e-6,
+               HardeningCurve(0.94, {}, {}, "test"))}};
 
   std::vector<std::pair<std::string, Tensor<2, dim>>> gradients;
   Tensor<2, dim> F;

@@ -2,12 +2,15 @@
 // laws' own evaluate() gives: for 32 random deformation gradients (det F
 // from 0.4 to 2.5, shears up to 0.5) the Kirchhoff stress, stored energy
 // and wave speed of the batched Yeoh kernel (with 1, 2 and 3 volumetric
-// terms) and of the point-by-point kernel (Elastic, J2 plasticity with
-// history) agree with MaterialModel::evaluate() to 1e-12 relative (the
-// Yeoh kernel takes J^{-1/3} from simd_math::inverse_cube_root instead of
-// std::pow). An inverted point is reported by its index. Also checks
-// simd_math::inverse_cube_root against 1 / std::cbrt over x in [1e-6, 1e6]
-// to 1e-15 relative (a few ulp).
+// terms of the polynomial volumetric function, and with the log squared and
+// Simo-Taylor functions) and of the point-by-point kernel (Elastic, J2
+// plasticity with history) agree with MaterialModel::evaluate() to 1e-12
+// relative (the Yeoh kernel takes J^{-1/3} from simd_math::inverse_cube_root
+// instead of std::pow, and ln J from simd_math::natural_log instead of
+// std::log). An inverted point is reported by its index. Also checks
+// simd_math::inverse_cube_root against 1 / std::cbrt and
+// simd_math::natural_log against std::log over x in [1e-6, 1e6] to 1e-15
+// relative (a few ulp), and natural_log(1) = 0 exactly (the energy at rest).
 #include <rubberdyn/base/simd_math.h>
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/hardening_curve.h>
@@ -51,21 +54,72 @@ main()
     check(worst < 1e-15, "inverse_cube_root to 1e-15");
   }
 
-  std::vector<std::pair<std::string, std::shared_ptr<materials::MaterialModel<3>>>>
-    laws = {
-      {"Yeoh, K only",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.015e-3, std::array<double, 3>{{1.2, 0., 0.}},
-         1.1e-6)},
-      {"Yeoh, D1..D3",
-       std::make_shared<materials::Yeoh<3>>(
-         0.55e-3, -0.05e-3, 0.95e-3, std::array<double, 3>{{1.2, 0.3, 0.05}},
-         1.1e-6)},
-      {"Elastic", std::make_shared<materials::Elastic<3>>(210., 0.3, 7.85e-6)},
-      {"J2 plasticity",
-       std::make_shared<materials::J2Plasticity<3>>(
-         70., 0.33, 2.7e-6,
-         materials::HardeningCurve(0.2, {0.1}, {0.3}, "test"))}};
+  // natural_log over 12 decades, and around 1 (where ln x is small and
+  // only a relative error tells).
+  {
+    std::mt19937                           generator(2);
+    std::uniform_real_distribution<double> exponent(-6., 6.),
+      near_one(-1e-3, 1e-3);
+    double worst = 0.;
+    for (unsigned int i = 0; i < 1000000; ++i)
+      for (const double x :
+           {std::pow(10., exponent(generator)), 1. + near_one(generator)})
+        {
+          const double exact = std::log(x);
+          if (exact != 0.)
+            worst = std::max(worst,
+                             std::abs(simd_math::natural_log(x) - exact) /
+                               std::abs(exact));
+        }
+    out() << "natural_log within 1e-15 of std::log, natural_log(1) = "
+          << simd_math::natural_log(1.) << ": "
+          << (worst < 1e-15 ? "yes" : "no") << std::endl;
+    std::cerr << "natural_log: largest relative error " << sci(worst)
+              << std::endl;
+    check(worst < 1e-15, "natural_log to 1e-15");
+    check(simd_math::natural_log(1.) == 0., "natural_log(1) = 0");
+  }
+
+  std::vector<
+    std::pair<std::string, std::shared_ptr<materials::MaterialModel<3>>>>
+    laws = {{"Yeoh, K only",
+             std::make_shared<materials::Yeoh<3>>(0.55e-3,
+                                                  -0.05e-3,
+                                                  0.015e-3,
+                                                  std::array<double, 3>{
+                                                    {1.2, 0., 0.}},
+                                                  1.1e-6)},
+            {"Yeoh, D1..D3",
+             std::make_shared<materials::Yeoh<3>>(0.55e-3,
+                                                  -0.05e-3,
+                                                  0.95e-3,
+                                                  std::array<double, 3>{
+                                                    {1.2, 0.3, 0.05}},
+                                                  1.1e-6)},
+            {"Yeoh, log squared",
+             std::make_shared<materials::Yeoh<3>>(
+               0.55e-3,
+               -0.05e-3,
+               0.015e-3,
+               std::array<double, 3>{{1.2, 0., 0.}},
+               1.1e-6,
+               materials::VolumetricFunction::log_squared)},
+            {"Yeoh, Simo-Taylor",
+             std::make_shared<materials::Yeoh<3>>(
+               0.55e-3,
+               -0.05e-3,
+               0.95e-3,
+               std::array<double, 3>{{1.2, 0., 0.}},
+               1.1e-6,
+               materials::VolumetricFunction::simo_taylor)},
+            {"Elastic",
+             std::make_shared<materials::Elastic<3>>(210., 0.3, 7.85e-6)},
+            {"J2 plasticity",
+             std::make_shared<materials::J2Plasticity<3>>(
+               70.,
+               0.33,
+               2.7e-6,
+               materials::HardeningCurve(0.2, {0.1}, {0.3}, "test"))}};
 
   std::mt19937                           generator(7);
   std::uniform_real_distribution<double> entry(-0.5, 0.5);

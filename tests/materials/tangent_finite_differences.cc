@@ -1,4 +1,5 @@
-// Consistent tangents of all laws against central finite differences.
+// Consistent tangents of all laws against central finite differences, and
+// the stress of the hyperelastic laws against the energy.
 //
 // The spatial tangent c is defined by the directional derivative of the
 // Kirchhoff stress (see MaterialResponse::spatial_tangent):
@@ -11,6 +12,15 @@
 // central difference error is O(h^2) ~ 1e-12 and round-off ~ 1e-16/h =
 // 1e-10 of the stress scale, so the required 1e-6 leaves no room for a wrong
 // term (a missing geometric term gives errors of order 1).
+//
+// The hyperelastic laws (Yeoh with each volumetric function, Elastic) must
+// also have the stress of their stored energy W: tau = P F^T with
+// P_ij = dW/dF_ij by central differences of W (h = 1e-6; same error budget,
+// relative to |tau|, and the same 1e-6; the energy's round-off divided
+// by h makes it the looser check, measured up to 2e-9). Yeoh is checked with
+// each volumetric function U(J) (polynomial, log squared, Simo-Taylor), near
+// incompressibility and, at nu = 0.3, over J from 0.6 to 1.4, where the
+// three differ most.
 //
 // J2 plasticity is checked on the elastic branch and on the plastic branch:
 // the history is that of a point taken first to a plastic state; the
@@ -69,11 +79,12 @@ random_rotation()
 }
 
 // F = Q U with U symmetric, eigenvalues in [0.5, 1.8], det U scaled to
-// within 2 % of 1 (rubber is nearly incompressible). With @p strain_scale
-// small, U stays near I (metals).
+// within 2 % of 1 (rubber is nearly incompressible), or within
+// @p J_spread times @p strain_scale of 1. With @p strain_scale small, U
+// stays near I (metals).
 template <int dim>
 Tensor<2, dim>
-random_deformation(const double strain_scale)
+random_deformation(const double strain_scale, const double J_spread = 0.02)
 {
   Tensor<2, dim> A;
   for (unsigned int i = 0; i < dim; ++i)
@@ -82,7 +93,7 @@ random_deformation(const double strain_scale)
   Tensor<2, dim> U = Tensor<2, dim>(symmetrize(A));
   for (unsigned int i = 0; i < dim; ++i)
     U[i][i] += 1.;
-  const double J_target = 1. + uniform(-0.02, 0.02) * strain_scale;
+  const double J_target = 1. + uniform(-J_spread, J_spread) * strain_scale;
   U *= std::pow(J_target / determinant(U), 1. / dim);
   return random_rotation<dim>() * U;
 }
@@ -128,6 +139,31 @@ tangent_error(const MaterialModel<dim> &     material,
           }
       }
   return max_diff / max_dtau;
+}
+
+// Largest difference between tau and P F^T with P = dW/dF by central
+// differences of the stored energy, relative to |tau|.
+template <int dim>
+double
+energy_stress_error(const MaterialModel<dim> &material, const Tensor<2, dim> &F)
+{
+  MaterialResponse<dim> response;
+  material.evaluate(F, {}, {}, false, response);
+  const double   h = 1e-6;
+  Tensor<2, dim> P;
+  for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int j = 0; j < dim; ++j)
+      {
+        Tensor<2, dim> dF;
+        dF[i][j] = 1.;
+        MaterialResponse<dim> plus, minus;
+        material.evaluate(F + h * dF, {}, {}, false, plus);
+        material.evaluate(F - h * dF, {}, {}, false, minus);
+        P[i][j] =
+          (plus.strain_energy_density - minus.strain_energy_density) / (2. * h);
+      }
+  return (P * transpose(F) - Tensor<2, dim>(response.kirchhoff_stress)).norm() /
+         response.kirchhoff_stress.norm();
 }
 
 template <int dim>
@@ -179,36 +215,66 @@ run(std::ostream &log)
     std::string                          name;
     std::shared_ptr<MaterialModel<dim>>  material;
     double                               strain_scale;
+    double                               J_spread = 0.02;
   };
   // Chapter-4 rubber at nu = 0.49 and 0.499 (K = 1000 G), the study's
-  // final bushing rubber (C30 = 0.95 MPa), and an elastic steel.
-  const auto yeoh = [](const double C30, const double nu) {
+  // final bushing rubber (C30 = 0.95 MPa), a compressible rubber (nu = 0.3)
+  // over a wide range of J, each with the three volumetric functions, and
+  // an elastic steel.
+  const auto yeoh = [](const double             C30,
+                       const double             nu,
+                       const VolumetricFunction function) {
     const double G = 1.1e-3;
     const double K = 2. * G * (1. + nu) / (3. * (1. - 2. * nu));
-    return std::make_shared<Yeoh<dim>>(0.55e-3, -0.05e-3, C30,
+    return std::make_shared<Yeoh<dim>>(0.55e-3,
+                                       -0.05e-3,
+                                       C30,
                                        std::array<double, 3>{{2. / K, 0., 0.}},
-                                       1.1e-6);
+                                       1.1e-6,
+                                       function);
   };
-  std::vector<Case> cases = {
-    {"Yeoh nu = 0.49", yeoh(0.015e-3, 0.49), 0.4},
-    {"Yeoh nu = 0.499", yeoh(0.015e-3, 0.499), 0.4},
-    {"Yeoh C30 = 0.95 MPa", yeoh(0.95e-3, 0.499), 0.4},
-    {"Yeoh d1, d2, d3", std::make_shared<Yeoh<dim>>(
-                          0.55e-3, -0.05e-3, 0.015e-3,
-                          std::array<double, 3>{{2e-3, 1e-2, 5e-2}}, 1.1e-6),
-     0.4},
-    {"Elastic steel", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6),
-     0.3}};
+  std::vector<Case> cases;
+  for (const VolumetricFunction function : {VolumetricFunction::polynomial,
+                                            VolumetricFunction::log_squared,
+                                            VolumetricFunction::simo_taylor})
+    {
+      const std::string suffix = (function == VolumetricFunction::polynomial ?
+                                    "" :
+                                    ", " + volumetric_function_name(function));
+      cases.push_back(
+        {"Yeoh nu = 0.49" + suffix, yeoh(0.015e-3, 0.49, function), 0.4});
+      cases.push_back(
+        {"Yeoh nu = 0.499" + suffix, yeoh(0.015e-3, 0.499, function), 0.4});
+      cases.push_back(
+        {"Yeoh C30 = 0.95 MPa" + suffix, yeoh(0.95e-3, 0.499, function), 0.4});
+      // J = 1 +- 0.4.
+      cases.push_back({"Yeoh nu = 0.3, J in [0.6, 1.4]" + suffix,
+                       yeoh(0.015e-3, 0.3, function),
+                       0.4,
+                       1.});
+    }
+  cases.push_back(
+    {"Yeoh d1, d2, d3",
+     std::make_shared<Yeoh<dim>>(0.55e-3,
+                                 -0.05e-3,
+                                 0.015e-3,
+                                 std::array<double, 3>{{2e-3, 1e-2, 5e-2}},
+                                 1.1e-6),
+     0.4});
+  cases.push_back(
+    {"Elastic steel", std::make_shared<Elastic<dim>>(210., 0.3, 7.85e-6), 0.3});
   for (const Case &c : cases)
     {
-      double tangent = 0., objectivity = 0.;
+      double tangent = 0., objectivity = 0., energy = 0.;
       for (unsigned int sample = 0; sample < 10; ++sample)
         {
-          const Tensor<2, dim> F = random_deformation<dim>(c.strain_scale);
+          const Tensor<2, dim> F =
+            random_deformation<dim>(c.strain_scale, c.J_spread);
           tangent = std::max(tangent, tangent_error(*c.material, F, {},
                                                     sample == 0));
           objectivity =
             std::max(objectivity, objectivity_error(*c.material, F, {}));
+          energy = std::max(energy, energy_stress_error(*c.material, F));
         }
       MaterialResponse<dim> at_rest;
       Tensor<2, dim>        I;
@@ -216,10 +282,12 @@ run(std::ostream &log)
         I[i][i] = 1.;
       c.material->evaluate(I, {}, {}, false, at_rest);
       log << "  " << c.name << ": tangent error " << sci(tangent)
-          << ", objectivity error " << sci(objectivity)
+          << ", stress - dW/dF " << sci(energy) << ", objectivity error "
+          << sci(objectivity)
           << ", |tau(I)| = " << at_rest.kirchhoff_stress.norm()
           << ", W(I) = " << at_rest.strain_energy_density << std::endl;
       check(tangent < 1e-6, c.name + ": tangent within 1e-6");
+      check(energy < 1e-6, c.name + ": stress = dW/dF within 1e-6");
       check(objectivity < 1e-12, c.name + ": objective");
       check(at_rest.kirchhoff_stress.norm() == 0. &&
               std::abs(at_rest.strain_energy_density) < 1e-18,

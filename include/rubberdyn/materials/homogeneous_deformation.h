@@ -66,8 +66,9 @@ namespace rubberdyn
        *
        * Start from a nearby state (the previous load step, or
        * incompressible_lateral_stretch()): the volumetric term of eq. 3.16
-       * stays finite as $J \to 0$, so far from the solution Newton's method
-       * can be drawn towards a spurious state of tiny volume.
+       * (the default 'polynomial' VolumetricFunction) stays finite as
+       * $J \to 0$, so far from the solution Newton's method can be drawn
+       * towards a spurious state of tiny volume.
        *
        * @return The lateral stretch $\mu$.
        * @throws std::runtime_error if Newton's method does not converge in
