@@ -3,9 +3,9 @@
 
 #include <rubberdyn/elements/solid_hex_elements.h>
 
-#include "hex_lanes.h"
-
 #include <vector>
+
+#include "hex_lanes.h"
 
 // The consistent tangent of the hexahedra's internal force, for Newton's
 // method (doc/theory.md, section 9). Scalar code, one element at a time,
@@ -44,7 +44,7 @@ namespace rubberdyn
                     {
                       const double xi = ((q >> d) & 1) ? lanes_of::gauss_high :
                                                          lanes_of::gauss_low;
-                      const bool high = (a >> d) & 1;
+                      const bool   high = (a >> d) & 1;
                       if (d == k)
                         product *= high ? 1. : -1.;
                       else
@@ -73,9 +73,9 @@ namespace rubberdyn
 
     void
     SolidHexElements::compute_tangents(
-      const VectorType &u,
-      const std::function<void(const unsigned int *dofs, const double *K)>
-        &add) const
+      const VectorType                                                     &u,
+      const std::function<void(const unsigned int *dofs, const double *K)> &add)
+      const
     {
       const double *const u_local = u.begin();
       unsigned int        dofs[3 * n_nodes];
@@ -87,11 +87,11 @@ namespace rubberdyn
         {
           const internal::HexBlock &block = blocks[element.block];
           const unsigned int        l     = element.lane;
-          const GroupData &         group = groups[block.group];
-          const bool fbar  = (group.formulation == Formulation::fbar);
+          const GroupData          &group = groups[block.group];
+          const bool   fbar  = (group.formulation == Formulation::fbar);
           const double kappa = fbar ? group.stabilization_modulus : 0.;
-          const materials::MaterialModel<3> &law = *group.law;
-          const unsigned int n_state = law.n_state_variables();
+          const materials::MaterialModel<3> &law     = *group.law;
+          const unsigned int                 n_state = law.n_state_variables();
           state_scratch.resize(n_state);
 
           Tensor<1, 3> ue[n_nodes];
@@ -105,7 +105,7 @@ namespace rubberdyn
           // Reference gradients grad_X N_a at the Gauss points and the
           // centre, and F = I + sum_a u_a (x) grad_X N_a.
           const auto deformation_gradient =
-            [&](const Tensor<1, 3> (&grad_N)[n_nodes]) {
+            [&](const Tensor<1, 3>(&grad_N)[n_nodes]) {
               Tensor<2, 3> F;
               for (unsigned int d = 0; d < 3; ++d)
                 F[d][d] = 1.;
@@ -119,8 +119,8 @@ namespace rubberdyn
               for (unsigned int k = 0; k < 3; ++k)
                 grad_N0[a][c] += reference.centre[a][k] *
                                  block.inverse_jacobian_centre[k][c][l];
-          const Tensor<2, 3> F0  = deformation_gradient(grad_N0);
-          const double       J0  = determinant(F0);
+          const Tensor<2, 3> F0 = deformation_gradient(grad_N0);
+          const double       J0 = determinant(F0);
           const Tensor<2, 3> F0_inverse_transpose = transpose(invert(F0));
           // g0_a = F0^{-T} grad_X N_a(centre).
           Tensor<1, 3> g0[n_nodes];
@@ -144,20 +144,19 @@ namespace rubberdyn
                 g[a] = F_inverse_transpose * grad_N[a];
 
               // The law at F-bar = (J0/J)^(1/3) F (F-bar) or F.
-              const double r = fbar ? J / J0 : 1.;
+              const double                   r = fbar ? J / J0 : 1.;
               materials::MaterialResponse<3> response;
-              const double *state_old =
-                n_state == 0 ?
-                  nullptr :
-                  history_old.data() + block.history_offset +
-                    (q * lanes + l) * n_state;
+              const double                  *state_old =
+                n_state == 0 ? nullptr :
+                                                history_old.data() + block.history_offset +
+                                 (q * lanes + l) * n_state;
               law.evaluate(fbar ? std::cbrt(1. / r) * F : F,
                            ArrayView<const double>(state_old, n_state),
                            ArrayView<double>(state_scratch.data(), n_state),
                            true,
                            response);
-              const Tensor<2, 3> tau = response.kirchhoff_stress;
-              const SymmetricTensor<4, 3> &c = response.spatial_tangent;
+              const Tensor<2, 3>           tau = response.kirchhoff_stress;
+              const SymmetricTensor<4, 3> &c   = response.spatial_tangent;
               // F-bar: t = tr(tau)/3 - p_stab with the stabilisation's
               // pressure p_stab = kappa/2 (r - 1/r) and its derivative
               // d p_stab = kappa/2 (r + 1/r) dr/r.
@@ -192,8 +191,7 @@ namespace rubberdyn
                       {
                         // d f_a = d tau g_a + tau d g_a
                         //   + d t (g0_a - g_a) + t (d g0_a - d g_a).
-                        Tensor<1, 3> df =
-                          d_tau * g[a] - g[a][j] * (tau * g[b]);
+                        Tensor<1, 3> df = d_tau * g[a] - g[a][j] * (tau * g[b]);
                         if (fbar)
                           df += d_t * (g0[a] - g[a]) +
                                 t * (-g0[a][j] * g0[b] + g[a][j] * g[b]);

@@ -20,12 +20,12 @@ namespace rubberdyn
   {
     void
     QuasiStaticSimulation::check_supported(
-      const Model &                      model,
+      const Model                       &model,
       const parameters::TimeIntegration &time_integration,
-      const parameters::Output &          output)
+      const parameters::Output          &output)
     {
       const std::string scheme = "Time integration/Scheme";
-      const auto refuse = [&](const std::string &what,
+      const auto        refuse = [&](const std::string &what,
                               const std::string &entry) {
         throw InputError(scheme,
                          "'" + time_integration.scheme + "' cannot run " +
@@ -69,10 +69,10 @@ namespace rubberdyn
 
 
     QuasiStaticSimulation::QuasiStaticSimulation(
-      Model &                             model,
+      Model                             &model,
       const parameters::TimeIntegration &time_integration,
-      const parameters::Output &          output,
-      const std::string &                 title)
+      const parameters::Output          &output,
+      const std::string                 &title)
       : model(model)
       , time_integration(time_integration)
       , output(output)
@@ -80,16 +80,24 @@ namespace rubberdyn
     {
       check_supported(model, time_integration, output);
       elements = std::make_unique<elements::SolidHexElements>();
-      elements->initialize(model.dof_handler, model.partitioner,
+      elements->initialize(model.dof_handler,
+                           model.partitioner,
                            setup::element_groups(model),
                            setup::element_settings(time_integration));
       constraints = std::make_unique<time_integration::KinematicConstraints>(
-        model.dof_handler, model.partitioner);
-      setup::add_kinematic_constraints(model, *constraints, condition_of_group,
+        model.dof_handler,
+        model.partitioner);
+      setup::add_kinematic_constraints(model,
+                                       *constraints,
+                                       condition_of_group,
                                        direction_of_group);
       newton = std::make_unique<time_integration::QuasiStaticSolver>(
-        model.dof_handler, model.partitioner, *elements, *constraints,
-        time_integration.quasi_static, model.comm);
+        model.dof_handler,
+        model.partitioner,
+        *elements,
+        *constraints,
+        time_integration.quasi_static,
+        model.comm);
     }
 
 
@@ -103,9 +111,9 @@ namespace rubberdyn
     {
       if (Utilities::MPI::this_mpi_process(model.comm) != 0)
         return;
-      log << title << " (quasi-static): "
-          << model.triangulation.n_global_active_cells() << " cells, "
-          << model.dof_handler.n_dofs() << " dofs, "
+      log << title
+          << " (quasi-static): " << model.triangulation.n_global_active_cells()
+          << " cells, " << model.dof_handler.n_dofs() << " dofs, "
           << Utilities::MPI::n_mpi_processes(model.comm) << " ranks\n";
       for (const Part &part : model.parts)
         {
@@ -113,10 +121,9 @@ namespace rubberdyn
           part.law->print_constants(log);
         }
       const parameters::QuasiStatic &q = time_integration.quasi_static;
-      log << "  Load path t = 0 to "
-          << time_integration.quasi_static_end_time << ", steps "
-          << q.initial_step << " (first), " << q.minimum_step << " to "
-          << q.maximum_step << "; linear solver "
+      log << "  Load path t = 0 to " << time_integration.quasi_static_end_time
+          << ", steps " << q.initial_step << " (first), " << q.minimum_step
+          << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
     }
 
@@ -137,7 +144,8 @@ namespace rubberdyn
       log_model(log);
       std::filesystem::create_directories(output.directory);
 
-      std::vector<std::string> columns = {"time", "newton_iterations",
+      std::vector<std::string> columns = {"time",
+                                          "newton_iterations",
                                           "internal_energy"};
       for (const Part &part : model.parts)
         columns.push_back(part.name + "_internal_energy");
@@ -147,17 +155,19 @@ namespace rubberdyn
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(bc.name + quantity + xyz[d]);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
-                                       columns, root);
+                                       columns,
+                                       root);
 
       time_integration::QuasiStaticSolver &s = *newton;
       // Rows at every converged step (interval 0), else at the first step
       // on or after each multiple of the interval (pseudo-time).
-      double     next_row = 0.;
+      double     next_row  = 0.;
       const auto write_row = [&]() {
-        std::vector<double> values = {
-          s.time(),
-          s.steps().empty() ? 0. : double(s.steps().back().iterations),
-          s.internal_energy()};
+        std::vector<double> values = {s.time(),
+                                      s.steps().empty() ?
+                                        0. :
+                                        double(s.steps().back().iterations),
+                                      s.internal_energy()};
         for (unsigned int p = 0; p < model.parts.size(); ++p)
           values.push_back(p < s.internal_energy_by_group().size() ?
                              s.internal_energy_by_group()[p] :
@@ -180,12 +190,12 @@ namespace rubberdyn
         const std::string row = history.write_row(values);
         if (root && output.echo_history)
           log << row;
-        next_row = output.history_output_interval > 0. ?
-                     (std::floor(s.time() / output.history_output_interval +
-                                 1e-9) +
-                      1.) *
-                       output.history_output_interval :
-                     0.;
+        next_row =
+          output.history_output_interval > 0. ?
+            (std::floor(s.time() / output.history_output_interval + 1e-9) +
+             1.) *
+              output.history_output_interval :
+            0.;
       };
 
       s.initialize();
@@ -215,10 +225,10 @@ namespace rubberdyn
               linear += step.linear_iterations;
               cutbacks += step.cutbacks;
             }
-          log << "Finished: " << s.steps().size() << " load steps to t = "
-              << s.time() << ", " << iterations << " Newton iterations, "
-              << linear << " linear iterations, " << cutbacks
-              << " cut-backs" << std::endl;
+          log << "Finished: " << s.steps().size()
+              << " load steps to t = " << s.time() << ", " << iterations
+              << " Newton iterations, " << linear << " linear iterations, "
+              << cutbacks << " cut-backs" << std::endl;
         }
     }
   } // namespace model

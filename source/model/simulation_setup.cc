@@ -14,10 +14,10 @@ namespace rubberdyn
         std::vector<elements::ElementGroup> groups;
         // A rigid part's group has no cells: no element forces, no step.
         for (const Part &part : model.parts)
-          groups.push_back({part.rigid ? std::set<types::material_id>() :
-                                         part.material_ids,
-                            part.law.get(),
-                            part.formulation});
+          groups.push_back(
+            {part.rigid ? std::set<types::material_id>() : part.material_ids,
+             part.law.get(),
+             part.formulation});
         return groups;
       }
 
@@ -38,10 +38,10 @@ namespace rubberdyn
 
       void
       add_kinematic_constraints(
-        const Model &                          model,
+        const Model                            &model,
         time_integration::KinematicConstraints &constraints,
-        std::vector<unsigned int> &            condition_of_group,
-        std::vector<unsigned int> &            direction_of_group)
+        std::vector<unsigned int>              &condition_of_group,
+        std::vector<unsigned int>              &direction_of_group)
       {
         using time_integration::KinematicConstraints;
         for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
@@ -53,8 +53,12 @@ namespace rubberdyn
                                  const KinematicConstraints::Kind kind,
                                  const KinematicConstraints::Function &function,
                                  const bool depends_on_position) {
-              constraints.prescribe(path, bc.boundary_ids, direction, kind,
-                                    function, depends_on_position,
+              constraints.prescribe(path,
+                                    bc.boundary_ids,
+                                    direction,
+                                    kind,
+                                    function,
+                                    depends_on_position,
                                     bc.moment_point);
               condition_of_group.push_back(c);
               direction_of_group.push_back(direction);

@@ -21,7 +21,6 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
-
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -54,11 +53,11 @@ namespace rubberdyn
     {
     public:
       Implementation(
-        const DoFHandler<3, 3> &                                  dof_handler,
+        const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-        elements::SolidHexElements &                              elements,
-        const KinematicConstraints &                              constraints,
-        const parameters::QuasiStatic &                           settings,
+        elements::SolidHexElements                               &elements,
+        const KinematicConstraints                               &constraints,
+        const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm);
 
       /** What one residual evaluation gives. */
@@ -70,8 +69,8 @@ namespace rubberdyn
         bool        failed = false;
         std::string failure;
         /** Norms of the free and constrained (reaction) parts. */
-        double free_norm = 0., reaction_norm = 0.;
-        double energy = 0.;
+        double              free_norm = 0., reaction_norm = 0.;
+        double              energy = 0.;
         std::vector<double> energy_by_group;
       };
 
@@ -86,7 +85,7 @@ namespace rubberdyn
        */
       void
       assemble(const VectorType &u,
-               const Residual &  r,
+               const Residual   &r,
                const VectorType &increment,
                const bool        predictor);
 
@@ -96,18 +95,16 @@ namespace rubberdyn
        * zero). Returns the linear iterations (0 for the direct solver).
        */
       unsigned int
-      solve(VectorType &      du,
-            const VectorType &increment,
-            const bool        predictor);
+      solve(VectorType &du, const VectorType &increment, const bool predictor);
 
       /** |du . rhs| over the free dofs (all ranks). */
       double
       energy_increment(const VectorType &du) const;
 
-      const DoFHandler<3, 3> &                           dof_handler;
+      const DoFHandler<3, 3>                            &dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      elements::SolidHexElements &                       elements;
-      const KinematicConstraints &                       constraints;
+      elements::SolidHexElements                        &elements;
+      const KinematicConstraints                        &constraints;
       parameters::QuasiStatic                            settings;
       MPI_Comm                                           comm;
       bool                                               use_direct;
@@ -116,22 +113,22 @@ namespace rubberdyn
       std::vector<bool> constrained;
       IndexSet          owned, relevant;
       /** The constrained dofs (homogeneous, the pattern of both). */
-      AffineConstraints<double>       homogeneous;
-      TrilinosWrappers::SparseMatrix  matrix;
-      TrilinosWrappers::MPI::Vector   rhs, solution;
+      AffineConstraints<double>      homogeneous;
+      TrilinosWrappers::SparseMatrix matrix;
+      TrilinosWrappers::MPI::Vector  rhs, solution;
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
-      std::vector<double>             rigid_body_modes;
+      std::vector<double>                                rigid_body_modes;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     };
 
 
 
     QuasiStaticSolver::Implementation::Implementation(
-      const DoFHandler<3, 3> &                                  dof_handler,
+      const DoFHandler<3, 3>                                   &dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      elements::SolidHexElements &                              elements,
-      const KinematicConstraints &                              constraints,
-      const parameters::QuasiStatic &                           settings,
+      elements::SolidHexElements                               &elements,
+      const KinematicConstraints                               &constraints,
+      const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm)
       : dof_handler(dof_handler)
       , partitioner(partitioner)
@@ -141,10 +138,9 @@ namespace rubberdyn
       , comm(comm)
     {
       using LinearSolver = parameters::QuasiStatic::LinearSolver;
-      use_direct =
-        settings.linear_solver == LinearSolver::direct ||
-        (settings.linear_solver == LinearSolver::automatic &&
-         dof_handler.n_dofs() <= settings.direct_solver_limit);
+      use_direct         = settings.linear_solver == LinearSolver::direct ||
+                   (settings.linear_solver == LinearSolver::automatic &&
+                    dof_handler.n_dofs() <= settings.direct_solver_limit);
 
       owned    = partitioner->locally_owned_range();
       relevant = owned;
@@ -181,7 +177,8 @@ namespace rubberdyn
           // coordinates: translations e_d and rotations e_k x (X - X_c)
           // (centred to keep them well conditioned).
           std::map<types::global_dof_index, Point<3>> points;
-          DoFTools::map_dofs_to_support_points(MappingQ1<3>(), dof_handler,
+          DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
+                                               dof_handler,
                                                points);
           Point<3> centre;
           for (const auto &p : points)
@@ -211,8 +208,8 @@ namespace rubberdyn
                 partitioner->local_to_global(i);
               const auto point = points.find(global);
               Assert(point != points.end(), ExcInternalError());
-              const Tensor<1, 3> x = point->second - centre;
-              const unsigned int c = component[i];
+              const Tensor<1, 3> x              = point->second - centre;
+              const unsigned int c              = component[i];
               rigid_body_modes[c * n_owned + i] = 1.;
               // Rotation about axis k: (e_k x x)_c.
               for (unsigned int k = 0; k < 3; ++k)
@@ -230,23 +227,23 @@ namespace rubberdyn
 
     void
     QuasiStaticSolver::Implementation::evaluate(const VectorType &u,
-                                                Residual &        r)
+                                                Residual         &r)
     {
       r.force.reinit(partitioner);
-      VectorType zero_velocity(partitioner);
-      const std::vector<double> no_scaling(elements.n_elements(), 1.);
+      VectorType                  zero_velocity(partitioner);
+      const std::vector<double>   no_scaling(elements.n_elements(), 1.);
       elements::ElementStepResult result;
       elements.compute_forces(u, zero_velocity, no_scaling, r.force, result);
       r.force.compress(VectorOperation::add);
 
-      r.failed  = Utilities::MPI::logical_or(result.failure.failed, comm);
+      r.failed = Utilities::MPI::logical_or(result.failure.failed, comm);
       r.failure.clear();
       if (r.failed)
         {
           const std::string message =
-            result.failure.failed ? "cell " + result.failure.cell_id + ": " +
-                                      result.failure.message :
-                                    "";
+            result.failure.failed ?
+              "cell " + result.failure.cell_id + ": " + result.failure.message :
+              "";
           for (const std::string &m : Utilities::MPI::all_gather(comm, message))
             if (!m.empty() && r.failure.empty())
               r.failure = m;
@@ -255,7 +252,8 @@ namespace rubberdyn
       double sums[2] = {0., 0.};
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
         sums[constrained[i] ? 1 : 0] += std::pow(r.force.local_element(i), 2);
-      Utilities::MPI::sum(ArrayView<const double>(sums, 2), comm,
+      Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                          comm,
                           ArrayView<double>(sums, 2));
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
@@ -266,7 +264,8 @@ namespace rubberdyn
           return;
         }
       r.energy_by_group = result.internal_energy_by_group;
-      Utilities::MPI::sum(ArrayView<const double>(r.energy_by_group), comm,
+      Utilities::MPI::sum(ArrayView<const double>(r.energy_by_group),
+                          comm,
                           ArrayView<double>(r.energy_by_group));
       r.energy = Utilities::MPI::sum(result.internal_energy, comm);
     }
@@ -275,7 +274,7 @@ namespace rubberdyn
 
     void
     QuasiStaticSolver::Implementation::assemble(const VectorType &u,
-                                                const Residual &  r,
+                                                const Residual   &r,
                                                 const VectorType &increment,
                                                 const bool        predictor)
     {
@@ -299,8 +298,8 @@ namespace rubberdyn
       FullMatrix<double>                   cell_matrix(24, 24);
       Vector<double>                       cell_rhs(24);
       std::vector<types::global_dof_index> global(24);
-      elements.compute_tangents(
-        u, [&](const unsigned int *dofs, const double *K) {
+      elements
+        .compute_tangents(u, [&](const unsigned int *dofs, const double *K) {
           for (unsigned int i = 0; i < 24; ++i)
             {
               global[i] = partitioner->local_to_global(dofs[i]);
@@ -308,8 +307,12 @@ namespace rubberdyn
                 cell_matrix(i, j) = K[24 * i + j];
             }
           cell_rhs = 0.;
-          step_constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, global, matrix, rhs, predictor);
+          step_constraints.distribute_local_to_global(cell_matrix,
+                                                      cell_rhs,
+                                                      global,
+                                                      matrix,
+                                                      rhs,
+                                                      predictor);
         });
       // -r on the free owned dofs (the residual is already summed). The
       // constrained rows keep what distribute_local_to_global() put there
@@ -331,7 +334,7 @@ namespace rubberdyn
 
 
     unsigned int
-    QuasiStaticSolver::Implementation::solve(VectorType &      du,
+    QuasiStaticSolver::Implementation::solve(VectorType       &du,
                                              const VectorType &increment,
                                              const bool        predictor)
     {
@@ -339,10 +342,10 @@ namespace rubberdyn
       unsigned int n_iter = 0;
       if (use_direct)
         {
-          SolverControl                    control(1, 0.);
+          SolverControl                                  control(1, 0.);
           TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                               "Amesos_Klu");
-          TrilinosWrappers::SolverDirect   direct(control, data);
+          TrilinosWrappers::SolverDirect                 direct(control, data);
           direct.solve(matrix, solution, rhs);
         }
       else if (rhs.l2_norm() > 0.)
@@ -355,7 +358,7 @@ namespace rubberdyn
           data.higher_order_elements = false;
           data.smoother_sweeps       = 2;
           data.aggregation_threshold = 1e-4;
-          Teuchos::ParameterList               list;
+          Teuchos::ParameterList              list;
           std::unique_ptr<Epetra_MultiVector> unused_modes;
           data.set_parameters(list, unused_modes, matrix);
           list.set("null space: type", "pre-computed");
@@ -382,10 +385,9 @@ namespace rubberdyn
           n_iter = control.last_step();
         }
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
-        du.local_element(i) =
-          constrained[i] ?
-            (predictor ? increment.local_element(i) : 0.) :
-            solution[partitioner->local_to_global(i)];
+        du.local_element(i) = constrained[i] ?
+                                (predictor ? increment.local_element(i) : 0.) :
+                                solution[partitioner->local_to_global(i)];
       return n_iter;
     }
 
@@ -405,11 +407,11 @@ namespace rubberdyn
 
 
     QuasiStaticSolver::QuasiStaticSolver(
-      const DoFHandler<3, 3> &                                  dof_handler,
+      const DoFHandler<3, 3>                                   &dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      elements::SolidHexElements &                              elements,
-      const KinematicConstraints &                              constraints,
-      const parameters::QuasiStatic &                           settings,
+      elements::SolidHexElements                               &elements,
+      const KinematicConstraints                               &constraints,
+      const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm)
       : impl(std::make_unique<Implementation>(dof_handler,
                                               partitioner,
@@ -445,9 +447,9 @@ namespace rubberdyn
       Implementation::Residual r;
       impl->evaluate(u, r);
       if (r.failed)
-        throw QuasiStaticFailure("the state at t = " +
-                                 short_number(current_time, 6) +
-                                 " fails: " + r.failure);
+        throw QuasiStaticFailure(
+          "the state at t = " + short_number(current_time, 6) +
+          " fails: " + r.failure);
       // Reactions and energies of the state.
       const KinematicConstraints &c = impl->constraints;
       reaction.assign(c.n_groups(), 0.);
@@ -467,7 +469,8 @@ namespace rubberdyn
           reaction_moment[entry.group] +=
             cross_product_3d(x - c.moment_point(entry.group), force);
         }
-      Utilities::MPI::sum(ArrayView<const double>(reaction), impl->comm,
+      Utilities::MPI::sum(ArrayView<const double>(reaction),
+                          impl->comm,
                           ArrayView<double>(reaction));
       for (Tensor<1, 3> &m : reaction_moment)
         for (unsigned int d = 0; d < 3; ++d)
@@ -480,15 +483,15 @@ namespace rubberdyn
 
     void
     QuasiStaticSolver::run(const double                 end_time,
-                           std::ostream &               log,
+                           std::ostream                &log,
                            const std::function<void()> &on_step)
     {
-      Implementation &            I    = *impl;
+      Implementation                &I = *impl;
       const parameters::QuasiStatic &s = I.settings;
-      const KinematicConstraints &c    = I.constraints;
-      const bool root = Utilities::MPI::this_mpi_process(I.comm) == 0;
+      const KinematicConstraints    &c = I.constraints;
+      const bool root       = Utilities::MPI::this_mpi_process(I.comm) == 0;
       const auto wall_start = std::chrono::steady_clock::now();
-      const auto wall = [&]() {
+      const auto wall       = [&]() {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                              wall_start)
           .count();
@@ -496,10 +499,10 @@ namespace rubberdyn
 
       // u is the iterate; u_start the last converged state (for a
       // cut-back); u_trial the line search's candidate.
-      VectorType u_start(u), u_trial(u), du(u), increment(u);
+      VectorType               u_start(u), u_trial(u), du(u), increment(u);
       Implementation::Residual r, r_trial;
-      double       step     = std::min(s.initial_step, s.maximum_step);
-      unsigned int cutbacks = 0;
+      double                   step = std::min(s.initial_step, s.maximum_step);
+      unsigned int             cutbacks = 0;
       while (current_time < end_time * (1. - 1e-12))
         {
           step = std::min(step, end_time - current_time);
@@ -527,13 +530,13 @@ namespace rubberdyn
           u.update_ghost_values();
           I.evaluate(u, r);
           std::string  reason;
-          bool         converged     = false;
-          double       first_energy  = 0.;
-          unsigned int linear_total  = 0, iteration = 0, growth = 0;
+          bool         converged    = false;
+          double       first_energy = 0.;
+          unsigned int linear_total = 0, iteration = 0, growth = 0;
           double       previous_norm = std::numeric_limits<double>::max();
           for (; iteration < s.max_iterations; ++iteration)
             {
-              const bool predictor = (iteration == 0);
+              const bool   predictor = (iteration == 0);
               unsigned int n_linear  = 0;
               try
                 {
@@ -542,8 +545,7 @@ namespace rubberdyn
                 }
               catch (const std::exception &e)
                 {
-                  reason = std::string("the linear solver failed: ") +
-                           e.what();
+                  reason = std::string("the linear solver failed: ") + e.what();
                   break;
                 }
               linear_total += n_linear;
@@ -562,7 +564,8 @@ namespace rubberdyn
               for (unsigned int trial = 0; trial < 7; ++trial)
                 {
                   for (unsigned int i = 0;
-                       i < I.partitioner->locally_owned_size(); ++i)
+                       i < I.partitioner->locally_owned_size();
+                       ++i)
                     u_trial.local_element(i) =
                       u.local_element(i) +
                       (I.constrained[i] ? 1. : alpha) * du.local_element(i);
@@ -624,8 +627,8 @@ namespace rubberdyn
                   reason = "the residual grows";
                   break;
                 }
-              previous_norm = predictor ? std::numeric_limits<double>::max() :
-                                          r.free_norm;
+              previous_norm =
+                predictor ? std::numeric_limits<double>::max() : r.free_norm;
             }
           if (!converged && reason.empty())
             reason = "no convergence in " + std::to_string(s.max_iterations) +

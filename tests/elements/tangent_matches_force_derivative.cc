@@ -43,8 +43,9 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle(tria, {2, 1, 1},
+  Triangulation<3>                 tria;
+  GridGenerator::subdivided_hyper_rectangle(tria,
+                                            {2, 1, 1},
                                             Point<3>(0., 0., 0.),
                                             Point<3>(10., 5., 5.));
   GridTools::transform(
@@ -59,7 +60,8 @@ main(int argc, char **argv)
   DoFHandler<3> dof_handler(tria);
   dof_handler.distribute_dofs(fe);
   const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
+    dof_handler.locally_owned_dofs(),
+    MPI_COMM_SELF);
   const unsigned int n = dof_handler.n_dofs();
 
   // Reference study's Yeoh constants (GPa); D1 = 2 / K with K = ratio G,
@@ -67,7 +69,9 @@ main(int argc, char **argv)
   const double C10 = 0.55e-3, C20 = -0.05e-3, C30 = 0.015e-3;
   const auto   yeoh = [&](const double ratio) {
     const double K = ratio * 2. * C10;
-    return materials::Yeoh<3>(C10, C20, C30,
+    return materials::Yeoh<3>(C10,
+                              C20,
+                              C30,
                               std::array<double, 3>{{2. / K, 0., 0.}},
                               1.1e-6);
   };
@@ -76,7 +80,9 @@ main(int argc, char **argv)
   // plastic strain): the pre-deformation below is ~100 times the yield
   // strain, so every Gauss point returns radially.
   const materials::J2Plasticity<3> steel(
-    210., 0.3, 7.85e-6,
+    210.,
+    0.3,
+    7.85e-6,
     materials::HardeningCurve::parse(0.3, "0.1:0.5", "test"));
 
   std::mt19937                           generator(7);
@@ -89,9 +95,9 @@ main(int argc, char **argv)
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
-            const auto         ci = fe.system_to_component_index(i);
-            const Point<3>     X  = cell->vertex(ci.second);
-            const unsigned int d  = ci.first;
+            const auto         ci        = fe.system_to_component_index(i);
+            const Point<3>     X         = cell->vertex(ci.second);
+            const unsigned int d         = ci.first;
             const double       strain[3] = {0.12, 0.1, -0.25};
             u0[dofs[i]] = strain[d] * X[d] + (d == 0 ? 0.15 * X[2] : 0.);
           }
@@ -137,12 +143,13 @@ main(int argc, char **argv)
     {
       elements::SolidHexElements hexes;
       // No collapse check: the perturbed pre-deformation is legitimate.
-      hexes.initialize(dof_handler, partitioner,
+      hexes.initialize(dof_handler,
+                       partitioner,
                        {{{0}, c.law, c.formulation}},
                        {0.06, 1.5, c.stabilization, 0.});
       const std::vector<double> no_scaling(hexes.n_elements(), 1.);
-      VectorType u(u0), v(partitioner), f(partitioner);
-      const auto force = [&](const VectorType &displacement) {
+      VectorType                u(u0), v(partitioner), f(partitioner);
+      const auto                force = [&](const VectorType &displacement) {
         elements::ElementStepResult result;
         f = 0.;
         hexes.compute_forces(displacement, v, no_scaling, f, result);
@@ -151,12 +158,12 @@ main(int argc, char **argv)
       };
 
       FullMatrix<double> K(n, n), K_fd(n, n);
-      hexes.compute_tangents(u, [&](const unsigned int *dofs,
-                                    const double *      Ke) {
-        for (unsigned int i = 0; i < 24; ++i)
-          for (unsigned int j = 0; j < 24; ++j)
-            K(dofs[i], dofs[j]) += Ke[24 * i + j];
-      });
+      hexes.compute_tangents(u,
+                             [&](const unsigned int *dofs, const double *Ke) {
+                               for (unsigned int i = 0; i < 24; ++i)
+                                 for (unsigned int j = 0; j < 24; ++j)
+                                   K(dofs[i], dofs[j]) += Ke[24 * i + j];
+                             });
       const double h = 1e-6;
       for (unsigned int j = 0; j < n; ++j)
         {
@@ -180,7 +187,8 @@ main(int argc, char **argv)
       const double relative = max_error / max_K;
       worst                 = std::max(worst, relative);
       out() << c.name << ": max |K| " << std::setprecision(6) << max_K
-            << " kN/mm, symmetric: " << (asymmetry < 1e-10 * max_K ? "yes" : "no")
+            << " kN/mm, symmetric: "
+            << (asymmetry < 1e-10 * max_K ? "yes" : "no")
             << ", FD error below 1e-7: " << (relative < 1e-7 ? "yes" : "no")
             << std::endl;
       std::cerr << c.name << ": relative error " << sci(relative)

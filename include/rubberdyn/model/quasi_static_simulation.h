@@ -50,10 +50,10 @@ namespace rubberdyn
        * @throws InputError naming `Time integration/Scheme` and the entry
        *   of the model that the scheme cannot run (check_supported()).
        */
-      QuasiStaticSimulation(Model &                             model,
+      QuasiStaticSimulation(Model                             &model,
                             const parameters::TimeIntegration &time_integration,
-                            const parameters::Output &          output,
-                            const std::string &                 title);
+                            const parameters::Output          &output,
+                            const std::string                 &title);
 
       ~QuasiStaticSimulation();
 
@@ -65,9 +65,9 @@ namespace rubberdyn
        * checkpoints and restarts.
        */
       static void
-      check_supported(const Model &                      model,
+      check_supported(const Model                       &model,
                       const parameters::TimeIntegration &time_integration,
-                      const parameters::Output &          output);
+                      const parameters::Output          &output);
 
       /** Log the model and the solver settings without running: `--check`. */
       void
@@ -93,7 +93,7 @@ namespace rubberdyn
       void
       log_model(std::ostream &log) const;
 
-      Model &                                                 model;
+      Model                                                  &model;
       parameters::TimeIntegration                             time_integration;
       parameters::Output                                      output;
       std::string                                             title;

@@ -48,10 +48,10 @@ namespace rubberdyn
        */
       void
       add_kinematic_constraints(
-        const Model &                          model,
+        const Model                            &model,
         time_integration::KinematicConstraints &constraints,
-        std::vector<unsigned int> &            condition_of_group,
-        std::vector<unsigned int> &            direction_of_group);
+        std::vector<unsigned int>              &condition_of_group,
+        std::vector<unsigned int>              &direction_of_group);
     } // namespace setup
   }   // namespace model
 } // namespace rubberdyn

@@ -56,7 +56,7 @@ namespace rubberdyn
       /** Residual norm (kN) always counted as converged (unloaded model). */
       double residual_floor = 1e-12;
       /** Whether Newton updates are damped by a backtracking line search. */
-      bool line_search = true;
+      bool         line_search   = true;
       LinearSolver linear_solver = LinearSolver::automatic;
       /** automatic: the direct solver up to this many dofs. */
       unsigned int direct_solver_limit = 60000;

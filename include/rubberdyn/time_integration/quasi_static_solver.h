@@ -111,11 +111,11 @@ namespace rubberdyn
        *   conditions, whose velocity is zero) hold their dofs at zero.
        */
       QuasiStaticSolver(
-        const DoFHandler<3, 3> &                                  dof_handler,
+        const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-        elements::SolidHexElements &                              elements,
-        const KinematicConstraints &                              constraints,
-        const parameters::QuasiStatic &                           settings,
+        elements::SolidHexElements                               &elements,
+        const KinematicConstraints                               &constraints,
+        const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm);
 
       ~QuasiStaticSolver();
@@ -140,7 +140,7 @@ namespace rubberdyn
        */
       void
       run(const double                 end_time,
-          std::ostream &               log,
+          std::ostream                &log,
           const std::function<void()> &on_step);
 
       /** Pseudo-time of the last converged state. */
