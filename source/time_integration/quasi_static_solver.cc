@@ -242,7 +242,7 @@ namespace rubberdyn
         {
           const std::string message =
             result.failure.failed ?
-              "cell " + result.failure.cell_id + ": " + result.failure.message :
+              "cell " + result.failure.cell_id + ", " + result.failure.message :
               "";
           for (const std::string &m : Utilities::MPI::all_gather(comm, message))
             if (!m.empty() && r.failure.empty())
@@ -369,20 +369,31 @@ namespace rubberdyn
           SolverControl control(10000,
                                 settings.linear_tolerance * rhs.l2_norm());
           // CG where the tangent is symmetric (hyperelastic laws: the
-          // element force is an energy gradient), GMRES otherwise.
+          // element force is an energy gradient), GMRES otherwise, and
+          // GMRES also when CG breaks down: away from equilibrium (a large
+          // predictor, buckling) the symmetric tangent can be indefinite.
+          const auto gmres = [&]() {
+            solution = 0.;
+            TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false,
+                                                                     200);
+            TrilinosWrappers::SolverGMRES solver(control, gmres_data);
+            solver.solve(matrix, solution, rhs, *amg);
+            return control.last_step();
+          };
           if (elements.has_history())
-            {
-              TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false,
-                                                                       200);
-              TrilinosWrappers::SolverGMRES gmres(control, gmres_data);
-              gmres.solve(matrix, solution, rhs, *amg);
-            }
+            n_iter = gmres();
           else
-            {
-              TrilinosWrappers::SolverCG cg(control);
-              cg.solve(matrix, solution, rhs, *amg);
-            }
-          n_iter = control.last_step();
+            try
+              {
+                TrilinosWrappers::SolverCG cg(control);
+                cg.solve(matrix, solution, rhs, *amg);
+                n_iter = control.last_step();
+              }
+            catch (const std::exception &)
+              {
+                const unsigned int cg_iterations = control.last_step();
+                n_iter                           = cg_iterations + gmres();
+              }
         }
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
         du.local_element(i) = constrained[i] ?
@@ -545,7 +556,11 @@ namespace rubberdyn
                 }
               catch (const std::exception &e)
                 {
-                  reason = std::string("the linear solver failed: ") + e.what();
+                  // (deal.II's NoConvergence has an empty what().)
+                  const std::string what = e.what();
+                  reason =
+                    "the linear solver failed" +
+                    (what.empty() ? std::string(" to converge") : ": " + what);
                   break;
                 }
               linear_total += n_linear;
