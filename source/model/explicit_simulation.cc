@@ -7,6 +7,7 @@
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -422,19 +423,10 @@ namespace rubberdyn
       const MPI_Comm comm = model.comm;
 
       // Elements: one group per part (its law and formulation).
-      std::vector<elements::ElementGroup> groups;
-      // A rigid part's group has no cells: no element forces, no step.
-      for (const Part &part : model.parts)
-        groups.push_back({part.rigid ? std::set<types::material_id>() :
-                                       part.material_ids,
-                          part.law.get(),
-                          part.formulation});
-      elements::ElementSettings element_settings;
-      element_settings.bulk_viscosity_linear =
-        time_integration.bulk_viscosity_linear;
-      element_settings.bulk_viscosity_quadratic =
-        time_integration.bulk_viscosity_quadratic;
-      element_settings.fbar_stabilization = time_integration.fbar_stabilization;
+      const std::vector<elements::ElementGroup> groups =
+        setup::element_groups(model);
+      const elements::ElementSettings element_settings =
+        setup::element_settings(time_integration);
       elements = std::make_unique<elements::SolidHexElements>();
       elements->initialize(model.dof_handler, model.partitioner, groups,
                            element_settings);
@@ -595,48 +587,8 @@ namespace rubberdyn
       constraints =
         std::make_unique<KinematicConstraints>(model.dof_handler,
                                                model.partitioner);
-      for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
-        {
-          const BoundaryCondition &bc   = model.boundary_conditions[c];
-          const std::string        path = "Boundary conditions/" + bc.name;
-          const auto zero = [](const Point<3> &, double) { return 0.; };
-          const auto add  = [&](const unsigned int                    direction,
-                               const KinematicConstraints::Kind      kind,
-                               const KinematicConstraints::Function &function,
-                               const bool depends_on_position) {
-            constraints->prescribe(path, bc.boundary_ids, direction, kind,
-                                   function, depends_on_position,
-                                   bc.moment_point);
-            condition_of_group.push_back(c);
-            direction_of_group.push_back(direction);
-          };
-          switch (bc.type)
-            {
-              case BoundaryCondition::Type::fixed:
-                for (const unsigned int d : bc.components)
-                  add(d, KinematicConstraints::Kind::velocity, zero, false);
-                break;
-              case BoundaryCondition::Type::displacement:
-              case BoundaryCondition::Type::velocity:
-                for (unsigned int k = 0; k < bc.components.size(); ++k)
-                  add(bc.components[k],
-                      bc.type == BoundaryCondition::Type::velocity ?
-                        KinematicConstraints::Kind::velocity :
-                        KinematicConstraints::Kind::displacement,
-                      bc.functions[k],
-                      bc.depends_on_position);
-                break;
-              case BoundaryCondition::Type::symmetry:
-                add(constraints->plane_normal_direction(path, bc.boundary_ids),
-                    KinematicConstraints::Kind::velocity,
-                    zero,
-                    false);
-                break;
-              case BoundaryCondition::Type::pressure:
-              case BoundaryCondition::Type::traction:
-                break;
-            }
-        }
+      setup::add_kinematic_constraints(model, *constraints, condition_of_group,
+                                       direction_of_group);
 
       // Pressures and tractions: one contribution for all of them.
       {

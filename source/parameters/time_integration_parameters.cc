@@ -14,11 +14,20 @@ namespace rubberdyn
     TimeIntegration::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time integration");
-      prm.declare_entry("Scheme", "explicit", Patterns::Selection("explicit"),
-                        "Time integration scheme. 'explicit': central "
-                        "differences with lumped mass (reference study eqs. "
-                        "2.7-2.10). A quasi-static Newton solver will add "
-                        "its values here.");
+      prm.declare_entry(
+        "Scheme", "explicit",
+        Patterns::Selection("explicit|quasi-static|quasi-static then explicit"),
+        "Time integration scheme. 'explicit': central differences with "
+        "lumped mass (reference study eqs. 2.7-2.10), to the End time (ms). "
+        "'quasi-static': static equilibrium by Newton-Raphson (no inertia), "
+        "with the boundary-condition functions of t as load paths, t running "
+        "from 0 to the Quasi-static end time (doc/quasi_static.md). "
+        "'quasi-static then explicit': the explicit run from the "
+        "quasi-static end state (not implemented yet).");
+      prm.declare_entry("Quasi-static end time", "1", Patterns::Double(0.),
+                        "Quasi-static scheme: the pseudo-time t at the end of "
+                        "the load path (-; the t of the boundary-condition "
+                        "functions, which then has no physical unit).");
       prm.declare_entry("End time", "30", Patterns::Double(0.),
                         "Simulated time (ms). At most 1e9 steps of the first "
                         "stable time step (the smallest element step, with "
@@ -47,6 +56,56 @@ namespace rubberdyn
                         "changes at a fixed element-centre volume, which F-bar "
                         "leaves to the shear stiffness alone (doc/theory.md "
                         "8.1). 0 switches it off.");
+      prm.enter_subsection("Quasi-static");
+      {
+        prm.declare_entry("Initial step", "0.1", Patterns::Double(0.),
+                          "First load step (pseudo-time, -).");
+        prm.declare_entry("Minimum step", "1e-4", Patterns::Double(0.),
+                          "Smallest load step (pseudo-time, -): a step that "
+                          "does not converge at this size ends the run with "
+                          "an error.");
+        prm.declare_entry("Maximum step", "0.1", Patterns::Double(0.),
+                          "Largest load step (pseudo-time, -); steps grow "
+                          "by 1.5 after a step that took at most 4 "
+                          "iterations, up to this.");
+        prm.declare_entry("Maximum iterations", "15", Patterns::Integer(1),
+                          "Newton iterations per load step (-) before the "
+                          "step is cut back (halved).");
+        prm.declare_entry("Maximum cut-backs", "10", Patterns::Integer(0),
+                          "Halvings of one load step in a row (-) before "
+                          "the run ends with an error.");
+        prm.declare_entry("Residual tolerance", "1e-8", Patterns::Double(0.),
+                          "Convergence: the norm of the out-of-balance "
+                          "force on the free dofs (kN) at most this times "
+                          "the norm of the reactions (-).");
+        prm.declare_entry("Energy tolerance", "1e-14", Patterns::Double(0.),
+                          "Convergence, also required: |du . r| of the last "
+                          "Newton correction at most this times the step's "
+                          "first |du . r| (-; the energy norm, J).");
+        prm.declare_entry("Residual floor", "1e-12", Patterns::Double(0.),
+                          "A residual norm below this (kN) counts as "
+                          "converged whatever the reactions (an unloaded "
+                          "model).");
+        prm.declare_entry("Line search", "true", Patterns::Bool(),
+                          "Damp each Newton correction by backtracking "
+                          "(halving, at most 6 times) until the residual "
+                          "norm decreases and no element inverts.");
+        prm.declare_entry("Linear solver", "automatic",
+                          Patterns::Selection("automatic|direct|AMG"),
+                          "'direct': sparse LU (Trilinos Amesos KLU); "
+                          "'AMG': CG (hyperelastic laws) or GMRES (laws "
+                          "with a history) preconditioned by Trilinos ML "
+                          "algebraic multigrid with the six rigid-body "
+                          "modes; 'automatic': direct up to the Direct "
+                          "solver limit, AMG above.");
+        prm.declare_entry("Direct solver limit", "60000", Patterns::Integer(0),
+                          "'automatic' uses the direct solver up to this "
+                          "many dofs (-).");
+        prm.declare_entry("Linear tolerance", "1e-10", Patterns::Double(0.),
+                          "AMG: relative residual of the CG or GMRES solve "
+                          "(-).");
+      }
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -65,7 +124,59 @@ namespace rubberdyn
       bulk_viscosity_linear    = prm.get_double("Bulk viscosity linear");
       bulk_viscosity_quadratic = prm.get_double("Bulk viscosity quadratic");
       fbar_stabilization       = prm.get_double("F-bar stabilization");
+      quasi_static_end_time    = prm.get_double("Quasi-static end time");
+      prm.enter_subsection("Quasi-static");
+      {
+        QuasiStatic &q        = quasi_static;
+        q.initial_step        = prm.get_double("Initial step");
+        q.minimum_step        = prm.get_double("Minimum step");
+        q.maximum_step        = prm.get_double("Maximum step");
+        q.max_iterations      = prm.get_integer("Maximum iterations");
+        q.max_cutbacks        = prm.get_integer("Maximum cut-backs");
+        q.residual_tolerance  = prm.get_double("Residual tolerance");
+        q.energy_tolerance    = prm.get_double("Energy tolerance");
+        q.residual_floor      = prm.get_double("Residual floor");
+        q.line_search         = prm.get_bool("Line search");
+        const std::string solver = prm.get("Linear solver");
+        q.linear_solver =
+          solver == "direct" ? QuasiStatic::LinearSolver::direct :
+          solver == "AMG"    ? QuasiStatic::LinearSolver::amg :
+                               QuasiStatic::LinearSolver::automatic;
+        q.direct_solver_limit = prm.get_integer("Direct solver limit");
+        q.linear_tolerance    = prm.get_double("Linear tolerance");
+      }
       prm.leave_subsection();
+      prm.leave_subsection();
+      {
+        const std::string path = "Time integration/Quasi-static/";
+        require_positive(quasi_static_end_time,
+                         "Time integration/Quasi-static end time");
+        require_positive(quasi_static.initial_step, path + "Initial step");
+        require_positive(quasi_static.minimum_step, path + "Minimum step");
+        require_positive(quasi_static.maximum_step, path + "Maximum step");
+        require_positive(quasi_static.residual_tolerance,
+                         path + "Residual tolerance");
+        require_positive(quasi_static.energy_tolerance,
+                         path + "Energy tolerance");
+        require_positive(quasi_static.linear_tolerance,
+                         path + "Linear tolerance");
+        if (quasi_static.minimum_step > quasi_static.initial_step)
+          throw InputError(path + "Minimum step",
+                           "is " +
+                             parameter_tools::format_short(
+                               quasi_static.minimum_step) +
+                             ", larger than the Initial step " +
+                             parameter_tools::format_short(
+                               quasi_static.initial_step));
+        if (quasi_static.initial_step > quasi_static.maximum_step)
+          throw InputError(path + "Initial step",
+                           "is " +
+                             parameter_tools::format_short(
+                               quasi_static.initial_step) +
+                             ", larger than the Maximum step " +
+                             parameter_tools::format_short(
+                               quasi_static.maximum_step));
+      }
       require_positive(end_time, "Time integration/End time");
       require_positive(time_step_scale,
                        "Time integration/Time step scale factor");

@@ -128,6 +128,12 @@ namespace rubberdyn
       require_positive(p.height, "Drop test/Cylinder height");
 
       p.time_integration.parse_parameters(prm);
+      // The drop test is an impact: rigid surfaces and initial velocities,
+      // which the quasi-static scheme cannot run.
+      if (p.time_integration.scheme != "explicit")
+        throw InputError("Time integration/Scheme",
+                         "the Drop test study runs 'explicit' only, not '" +
+                           p.time_integration.scheme + "'");
       prm.enter_subsection("Time integration");
       p.fbar = (prm.get("Element formulation") == "F-bar");
       prm.leave_subsection();

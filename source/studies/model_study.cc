@@ -9,6 +9,7 @@
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/studies/model_study.h>
 
@@ -780,9 +781,19 @@ namespace rubberdyn
       prm.leave_subsection();
 
       m.setup();
-      simulation = std::make_unique<model::ExplicitSimulation>(
-        m, time_integration, output, "Model", model_parameters);
-      simulation->add_standard_postprocessors();
+      if (time_integration.scheme == "quasi-static then explicit")
+        throw InputError("Time integration/Scheme",
+                         "'quasi-static then explicit' is not implemented "
+                         "yet; use 'quasi-static' or 'explicit'");
+      if (time_integration.scheme == "quasi-static")
+        quasi_static = std::make_unique<model::QuasiStaticSimulation>(
+          m, time_integration, output, "Model");
+      else
+        {
+          simulation = std::make_unique<model::ExplicitSimulation>(
+            m, time_integration, output, "Model", model_parameters);
+          simulation->add_standard_postprocessors();
+        }
     }
 
 
@@ -794,7 +805,10 @@ namespace rubberdyn
     void
     ModelStudy::run(std::ostream &log)
     {
-      simulation->run(log);
+      if (quasi_static)
+        quasi_static->run(log);
+      else
+        simulation->run(log);
     }
 
 
@@ -802,7 +816,10 @@ namespace rubberdyn
     void
     ModelStudy::check(std::ostream &log)
     {
-      simulation->check(log);
+      if (quasi_static)
+        quasi_static->check(log);
+      else
+        simulation->check(log);
     }
 
 

@@ -8,6 +8,7 @@
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/materials/stress_kernel.h>
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <set>
@@ -338,6 +339,41 @@ namespace rubberdyn
                      const std::vector<double> &density_scaling,
                      VectorType &               f,
                      ElementStepResult &        result);
+
+      /**
+       * The element stiffness for Newton's method: the exact consistent
+       * tangent $K_{ai,bj} = \partial f_{ai} / \partial u_{bj}$ of the
+       * internal force that compute_forces() returns at zero velocity (no
+       * bulk viscosity), F-bar stabilisation included, with the history of
+       * the last accepted state (accept_history()) as the start of the
+       * step; for an inelastic law it is the algorithmic tangent (not
+       * symmetric); for a hyperelastic law it is symmetric, the force being
+       * the gradient of the stored energy (doc/theory.md, section 10). Evaluated
+       * element by element in scalar code from the same geometry
+       * (internal::HexBlock) as the force kernel
+       * (source/elements/solid_hex_tangent.cc).
+       *
+       * @param u Displacement (ghosted, mm).
+       * @param add Called once per locally owned element with its 24 local
+       *   dof indices (node a, component i at 3 a + i, indices into the
+       *   ghosted vectors) and its 24 x 24 matrix, row-major, rows
+       *   3 a + i, columns 3 b + j (kN/mm).
+       *
+       * @throw materials::InvertedMaterialError if the law cannot evaluate
+       *   an element (call compute_forces() first: it reports failures).
+       */
+      void
+      compute_tangents(
+        const VectorType &u,
+        const std::function<void(const unsigned int *dofs, const double *K)>
+          &add) const;
+
+      /**
+       * Whether a law of some group keeps a history (inelastic: its
+       * tangent is not symmetric).
+       */
+      bool
+      has_history() const;
 
       /** Accept the history computed by the last compute_forces(). */
       void

@@ -21,9 +21,53 @@ namespace rubberdyn
   namespace parameters
   {
     /**
-     * The `Time integration` subsection: the central-difference scheme's
-     * step control, mass scaling, bulk viscosity and the F-bar
-     * stabilisation.
+     * The `Time integration/Quasi-static` subsection: load stepping, Newton
+     * tolerances and the linear solver of the quasi-static scheme
+     * (time_integration::QuasiStaticSolver, doc/quasi_static.md). Times are
+     * in the pseudo-time t of the boundary-condition functions, which runs
+     * from 0 to the Quasi-static end time.
+     */
+    struct QuasiStatic
+    {
+      /** The linear solver of each Newton iteration. */
+      enum class LinearSolver
+      {
+        /** direct below direct_solver_limit dofs, AMG above. */
+        automatic,
+        /** Trilinos Amesos KLU (sparse LU). */
+        direct,
+        /** CG or GMRES with Trilinos ML AMG (six rigid-body modes). */
+        amg
+      };
+      /** Pseudo-time of the first load step. */
+      double initial_step = 0.1;
+      /** Smallest load step before the run gives up. */
+      double minimum_step = 1e-4;
+      /** Largest load step (the growth after easy steps stops there). */
+      double maximum_step = 0.1;
+      /** Newton iterations allowed per load step. */
+      unsigned int max_iterations = 15;
+      /** Cut-backs (halvings) allowed in a row before the run gives up. */
+      unsigned int max_cutbacks = 10;
+      /** ||residual of the free dofs|| <= this * ||reactions||. */
+      double residual_tolerance = 1e-8;
+      /** |du . r| <= this * the step's first |du . r|. */
+      double energy_tolerance = 1e-14;
+      /** Residual norm (kN) always counted as converged (unloaded model). */
+      double residual_floor = 1e-12;
+      /** Whether Newton updates are damped by a backtracking line search. */
+      bool         line_search   = true;
+      LinearSolver linear_solver = LinearSolver::automatic;
+      /** automatic: the direct solver up to this many dofs. */
+      unsigned int direct_solver_limit = 60000;
+      /** Relative residual tolerance of the iterative solver. */
+      double linear_tolerance = 1e-10;
+    };
+
+    /**
+     * The `Time integration` subsection: the scheme; the central-difference
+     * scheme's step control, mass scaling, bulk viscosity and the F-bar
+     * stabilisation; the quasi-static scheme's end time and Newton settings.
      */
     struct TimeIntegration
     {
@@ -38,8 +82,15 @@ namespace rubberdyn
        */
       static constexpr double max_time_steps = 1e9;
 
-      /** `Scheme`: only "explicit" for now. */
+      /**
+       * `Scheme`: "explicit", "quasi-static" or "quasi-static then
+       * explicit" (refused for now by the Model study).
+       */
       std::string scheme = "explicit";
+      /** Pseudo-time at the end of the quasi-static run (-). */
+      double quasi_static_end_time = 1.;
+      /** The quasi-static scheme's settings. */
+      QuasiStatic quasi_static;
       /** Simulated time (ms). */
       double end_time = 30.;
       /** Factor on the stable step (-). */

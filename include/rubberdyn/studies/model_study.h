@@ -11,6 +11,7 @@ namespace rubberdyn
   {
     class Model;
     class ExplicitSimulation;
+    class QuasiStaticSimulation;
   } // namespace model
 
   namespace studies
@@ -24,7 +25,9 @@ namespace rubberdyn
      * functions of x, y, z, t); `Rigid surfaces` are planes and cylinders
      * carried by rigid bodies; `Model/Gravity` acts on everything. The
      * model is built (and every input checked) in the constructor, before
-     * anything is written; run() hands it to model::ExplicitSimulation.
+     * anything is written; run() hands it to model::ExplicitSimulation, or
+     * with `Time integration/Scheme = quasi-static` to
+     * model::QuasiStaticSimulation.
      *
      * Outputs: time_history.csv with time, time_step, the energies, per
      * boundary condition its reaction force and moment, per part its
@@ -61,7 +64,9 @@ namespace rubberdyn
 
     private:
       std::unique_ptr<model::Model>              model;
-      std::unique_ptr<model::ExplicitSimulation> simulation;
+      /** The engine: one of the two, by `Time integration/Scheme`. */
+      std::unique_ptr<model::ExplicitSimulation>    simulation;
+      std::unique_ptr<model::QuasiStaticSimulation> quasi_static;
     };
   } // namespace studies
 } // namespace rubberdyn

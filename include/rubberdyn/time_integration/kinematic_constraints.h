@@ -181,6 +181,25 @@ namespace rubberdyn
       double
       velocity(const unsigned int group, const double t) const;
 
+      /** What group @p group prescribes. */
+      Kind
+      kind(const unsigned int group) const
+      {
+        return groups[group].kind;
+      }
+
+      /**
+       * The displacement (mm) at time @p t that @p entry's group prescribes
+       * at its node, for a displacement group (the quasi-static solver's
+       * load path); for a velocity group, the value of its velocity
+       * function instead (mm/ms).
+       */
+      double
+      prescribed_function_value(const Entry &entry, const double t) const
+      {
+        return prescribed_value(groups[entry.group], entry.X, t);
+      }
+
       /** Number of groups. */
       unsigned int
       n_groups() const

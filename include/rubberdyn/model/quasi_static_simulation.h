@@ -1,0 +1,109 @@
+#ifndef rubberdyn_model_quasi_static_simulation_h
+#define rubberdyn_model_quasi_static_simulation_h
+
+#include <rubberdyn/parameters/output_parameters.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace elements
+  {
+    class SolidHexElements;
+  }
+  namespace time_integration
+  {
+    class KinematicConstraints;
+    class QuasiStaticSolver;
+  } // namespace time_integration
+
+  namespace model
+  {
+    class Model;
+
+    /**
+     * The quasi-static engine path (`Time integration/Scheme =
+     * quasi-static`): takes a Model and brings it through the load path of
+     * its boundary-condition functions, t from 0 to `Time integration/
+     * Quasi-static end time`, by Newton-Raphson
+     * (time_integration::QuasiStaticSolver). It builds the elements and the
+     * kinematic constraints exactly as model::ExplicitSimulation does
+     * (model::setup), and writes time_history.csv: time, newton_iterations,
+     * internal_energy, per part `<part>_internal_energy` and per boundary
+     * condition its reaction `<bc>_force_x/_y/_z` (kN) and
+     * `<bc>_moment_x/_y/_z` (kN mm), the columns and sign conventions of
+     * the explicit run (the force the condition exerts on the body).
+     *
+     * What the scheme cannot run yet is refused before anything is written
+     * (check_supported()).
+     */
+    class QuasiStaticSimulation
+    {
+    public:
+      /**
+       * Set everything up (nothing is written yet).
+       *
+       * @throws InputError naming `Time integration/Scheme` and the entry
+       *   of the model that the scheme cannot run (check_supported()).
+       */
+      QuasiStaticSimulation(Model                             &model,
+                            const parameters::TimeIntegration &time_integration,
+                            const parameters::Output          &output,
+                            const std::string                 &title);
+
+      ~QuasiStaticSimulation();
+
+      /**
+       * Refuse, with an InputError naming `Time integration/Scheme` and the
+       * offending entry, a model or settings the quasi-static scheme
+       * cannot run yet: rigid surfaces, rigid parts, velocity, pressure and
+       * traction conditions, initial velocities, gravity, mass scaling,
+       * checkpoints and restarts.
+       */
+      static void
+      check_supported(const Model                       &model,
+                      const parameters::TimeIntegration &time_integration,
+                      const parameters::Output          &output);
+
+      /** Log the model and the solver settings without running: `--check`. */
+      void
+      check(std::ostream &log);
+
+      /**
+       * Run the load path to the Quasi-static end time.
+       *
+       * @throws std::runtime_error if a load step cannot converge, after
+       *   writing the rows of every converged step.
+       */
+      void
+      run(std::ostream &log);
+
+      /** The solver (after construction). */
+      const time_integration::QuasiStaticSolver &
+      solver() const
+      {
+        return *newton;
+      }
+
+    private:
+      void
+      log_model(std::ostream &log) const;
+
+      Model                                                  &model;
+      parameters::TimeIntegration                             time_integration;
+      parameters::Output                                      output;
+      std::string                                             title;
+      std::unique_ptr<elements::SolidHexElements>             elements;
+      std::unique_ptr<time_integration::KinematicConstraints> constraints;
+      std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
+      /** Boundary condition and direction of each constraint group. */
+      std::vector<unsigned int> condition_of_group, direction_of_group;
+    };
+  } // namespace model
+} // namespace rubberdyn
+
+#endif

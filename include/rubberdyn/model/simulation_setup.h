@@ -1,0 +1,59 @@
+#ifndef rubberdyn_model_simulation_setup_h
+#define rubberdyn_model_simulation_setup_h
+
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
+
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace time_integration
+  {
+    class KinematicConstraints;
+  }
+
+  namespace model
+  {
+    class Model;
+
+    /**
+     * The set-up every solver of a Model shares (model::ExplicitSimulation,
+     * model::QuasiStaticSimulation): its element groups, the element
+     * settings and the kinematic constraints of its boundary conditions,
+     * built the same way whatever integrates them.
+     */
+    namespace setup
+    {
+      /**
+       * One element group per part, in the parts' order: its material ids
+       * (none for a rigid part: no element forces), law and formulation.
+       */
+      std::vector<elements::ElementGroup>
+      element_groups(const Model &model);
+
+      /** Bulk viscosity and F-bar settings from `Time integration`. */
+      elements::ElementSettings
+      element_settings(const parameters::TimeIntegration &time_integration);
+
+      /**
+       * One constraint group per constrained component of every fixed,
+       * displacement, velocity and symmetry condition (pressures and
+       * tractions are loads, not constraints), named
+       * `Boundary conditions/<name>`. Appends to @p condition_of_group and
+       * @p direction_of_group the condition and the direction of each
+       * group.
+       *
+       * @throws InputError as KinematicConstraints::prescribe() does.
+       */
+      void
+      add_kinematic_constraints(
+        const Model                            &model,
+        time_integration::KinematicConstraints &constraints,
+        std::vector<unsigned int>              &condition_of_group,
+        std::vector<unsigned int>              &direction_of_group);
+    } // namespace setup
+  }   // namespace model
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,217 @@
+#ifndef rubberdyn_time_integration_quasi_static_solver_h
+#define rubberdyn_time_integration_quasi_static_solver_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/tensor.h>
+
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class DoFHandler;
+}
+
+namespace rubberdyn
+{
+  namespace elements
+  {
+    class SolidHexElements;
+  }
+
+  namespace time_integration
+  {
+    using namespace dealii;
+    class KinematicConstraints;
+
+    /**
+     * A quasi-static run that could not go on: a load step did not converge
+     * after the allowed cut-backs, or reached the minimum step. The state
+     * of the last converged step is kept (QuasiStaticSolver::time(),
+     * displacement()).
+     */
+    class QuasiStaticFailure : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    /**
+     * What one load step cost, for the log and the tests.
+     */
+    struct LoadStepRecord
+    {
+      /** Pseudo-time at the end of the step. */
+      double time = 0.;
+      /** Its size. */
+      double step = 0.;
+      /** Newton iterations of the converged attempt. */
+      unsigned int iterations = 0;
+      /** Linear-solver iterations of the converged attempt (0: direct). */
+      unsigned int linear_iterations = 0;
+      /** Cut-backs before it converged. */
+      unsigned int cutbacks = 0;
+    };
+
+    /**
+     * Static equilibrium $f_{int}(u) = f_{ext}$ by Newton-Raphson with load
+     * stepping in the pseudo-time t of the boundary-condition functions
+     * (Wriggers, Nonlinear Finite Element Methods (2008), sections 5.1 and
+     * 5.2; Belytschko, Liu, Moran, Nonlinear Finite Elements (2000), section
+     * 6.3). No inertia, no external loads other than the prescribed
+     * displacements (the Model study refuses the rest for now).
+     *
+     * The residual is the internal force of elements::SolidHexElements at
+     * zero velocity, the very function the explicit solver integrates, and
+     * the tangent its exact derivative
+     * (elements::SolidHexElements::compute_tangents()), so that a converged
+     * state is an explicit equilibrium and Newton converges quadratically.
+     *
+     * Each load step from t_n to t_{n+1}: the first iteration solves
+     * $K \delta u = -r$ with $\delta u$ prescribed on the constrained dofs
+     * to $g(t_{n+1}) - u_n$ (the linearised predictor), the following ones
+     * with $\delta u = 0$ there. Constraints are eliminated with
+     * AffineConstraints (rows and columns removed, their inhomogeneity moved
+     * to the right-hand side): the reduced matrix keeps the tangent's
+     * symmetry where it has one, and later linear constraints (inclined
+     * symmetry, a rigid part's six dofs, a pretension section's dof) are
+     * lines of the same object. A backtracking line search halves the
+     * correction (at most 6 times) while an element inverts or the residual
+     * norm grows. Converged when both
+     * $\|r_{free}\| \le \epsilon_r \max(\|r_{constrained}\|, \ldots)$ (the
+     * reactions; or below an absolute floor) and
+     * $|\delta u_k \cdot r_k| \le \epsilon_E |\delta u_0 \cdot r_0|$ (the
+     * energy norm). A step that inverts an element, diverges (the residual
+     * grows in two iterations in a row from the third on) or uses up its
+     * iterations is halved; a step that took at most 4 iterations lets the
+     * next grow by 1.5, up to the maximum step. One log line per iteration.
+     *
+     * The linear systems: Trilinos Amesos KLU, or CG (hyperelastic laws:
+     * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
+     * near-null space holds the six rigid-body modes of the nodal
+     * coordinates (three translations, three rotations).
+     */
+    class QuasiStaticSolver
+    {
+    public:
+      /**
+       * @param elements Initialised elements (their history is advanced at
+       *   every converged step).
+       * @param constraints The kinematic conditions: displacement groups
+       *   follow their functions of t, velocity groups (fixed and symmetry
+       *   conditions, whose velocity is zero) hold their dofs at zero.
+       */
+      QuasiStaticSolver(
+        const DoFHandler<3, 3>                                   &dof_handler,
+        const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+        elements::SolidHexElements                               &elements,
+        const KinematicConstraints                               &constraints,
+        const parameters::QuasiStatic                            &settings,
+        const MPI_Comm                                            comm);
+
+      ~QuasiStaticSolver();
+
+      /** Which linear solver the runs use ("direct" or "AMG"). */
+      std::string
+      linear_solver_name() const;
+
+      /**
+       * Evaluate the state at t = 0 (forces, reactions, energy) without
+       * solving.
+       */
+      void
+      initialize();
+
+      /**
+       * Step from the current time to @p end_time, logging each iteration
+       * to @p log (rank 0) and calling @p on_step after every converged
+       * step (all ranks).
+       *
+       * @throws QuasiStaticFailure if a step cannot converge.
+       */
+      void
+      run(const double                 end_time,
+          std::ostream                &log,
+          const std::function<void()> &on_step);
+
+      /** Pseudo-time of the last converged state. */
+      double
+      time() const
+      {
+        return current_time;
+      }
+
+      /** Displacement of the last converged state (ghosted, mm). */
+      const VectorType &
+      displacement() const
+      {
+        return u;
+      }
+
+      /**
+       * Reaction of every constraint group (kN, summed over the ranks): the
+       * force the constraint exerts on the solid in its direction, i.e. the
+       * internal force at its dofs.
+       */
+      const std::vector<double> &
+      reactions() const
+      {
+        return reaction;
+      }
+
+      /**
+       * Moment of each group's reactions about its moment point (kN mm),
+       * with the nodes' current positions.
+       */
+      const std::vector<Tensor<1, 3>> &
+      reaction_moments() const
+      {
+        return reaction_moment;
+      }
+
+      /** Stored energy of the elements (J), summed over the ranks. */
+      double
+      internal_energy() const
+      {
+        return energy;
+      }
+
+      /** The same per element group (J). */
+      const std::vector<double> &
+      internal_energy_by_group() const
+      {
+        return energy_by_group;
+      }
+
+      /** The converged load steps so far. */
+      const std::vector<LoadStepRecord> &
+      steps() const
+      {
+        return records;
+      }
+
+    private:
+      class Implementation;
+      std::unique_ptr<Implementation> impl;
+
+      VectorType                  u;
+      double                      current_time = 0.;
+      std::vector<double>         reaction;
+      std::vector<Tensor<1, 3>>   reaction_moment;
+      double                      energy = 0.;
+      std::vector<double>         energy_by_group;
+      std::vector<LoadStepRecord> records;
+    };
+  } // namespace time_integration
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,235 @@
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/model/quasi_static_simulation.h>
+#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/postprocess/time_history.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
+#include <rubberdyn/time_integration/quasi_static_solver.h>
+
+#include <cmath>
+#include <filesystem>
+#include <ostream>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    void
+    QuasiStaticSimulation::check_supported(
+      const Model                       &model,
+      const parameters::TimeIntegration &time_integration,
+      const parameters::Output          &output)
+    {
+      const std::string scheme = "Time integration/Scheme";
+      const auto        refuse = [&](const std::string &what,
+                              const std::string &entry) {
+        throw InputError(scheme,
+                         "'" + time_integration.scheme + "' cannot run " +
+                           what + " (" + entry +
+                           ") yet; use 'explicit', or remove it");
+      };
+      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+        refuse("the rigid surface '" + surface.name + "'",
+               "Rigid surfaces/Names");
+      for (const Part &part : model.parts)
+        {
+          if (part.rigid)
+            refuse("the rigid part '" + part.name + "'",
+                   "Parts/" + part.name + "/Model");
+          if (part.initial_velocity.norm() != 0. ||
+              part.initial_angular_velocity.norm() != 0.)
+            refuse("an initial velocity of the part '" + part.name + "'",
+                   "Parts/" + part.name + "/Initial velocity");
+        }
+      for (const BoundaryCondition &bc : model.boundary_conditions)
+        {
+          const std::string type =
+            bc.type == BoundaryCondition::Type::velocity ? "velocity" :
+            bc.type == BoundaryCondition::Type::pressure ? "pressure" :
+            bc.type == BoundaryCondition::Type::traction ? "traction" :
+                                                           "";
+          if (!type.empty())
+            refuse("the " + type + " condition '" + bc.name + "'",
+                   "Boundary conditions/" + bc.name + "/Type");
+        }
+      if (model.gravity.norm() != 0.)
+        refuse("gravity", "Model/Gravity");
+      if (time_integration.mass_scaling_time_step > 0.)
+        refuse("mass scaling", "Time integration/Mass scaling time step");
+      if (output.checkpoint_interval > 0.)
+        refuse("checkpoints", "Output/Checkpoint interval");
+      if (output.restart)
+        refuse("a restart", "Output/Restart from checkpoint");
+    }
+
+
+
+    QuasiStaticSimulation::QuasiStaticSimulation(
+      Model                             &model,
+      const parameters::TimeIntegration &time_integration,
+      const parameters::Output          &output,
+      const std::string                 &title)
+      : model(model)
+      , time_integration(time_integration)
+      , output(output)
+      , title(title)
+    {
+      check_supported(model, time_integration, output);
+      elements = std::make_unique<elements::SolidHexElements>();
+      elements->initialize(model.dof_handler,
+                           model.partitioner,
+                           setup::element_groups(model),
+                           setup::element_settings(time_integration));
+      constraints = std::make_unique<time_integration::KinematicConstraints>(
+        model.dof_handler,
+        model.partitioner);
+      setup::add_kinematic_constraints(model,
+                                       *constraints,
+                                       condition_of_group,
+                                       direction_of_group);
+      newton = std::make_unique<time_integration::QuasiStaticSolver>(
+        model.dof_handler,
+        model.partitioner,
+        *elements,
+        *constraints,
+        time_integration.quasi_static,
+        model.comm);
+    }
+
+
+
+    QuasiStaticSimulation::~QuasiStaticSimulation() = default;
+
+
+
+    void
+    QuasiStaticSimulation::log_model(std::ostream &log) const
+    {
+      if (Utilities::MPI::this_mpi_process(model.comm) != 0)
+        return;
+      log << title
+          << " (quasi-static): " << model.triangulation.n_global_active_cells()
+          << " cells, " << model.dof_handler.n_dofs() << " dofs, "
+          << Utilities::MPI::n_mpi_processes(model.comm) << " ranks\n";
+      for (const Part &part : model.parts)
+        {
+          log << "  " << part.name << ": ";
+          part.law->print_constants(log);
+        }
+      const parameters::QuasiStatic &q = time_integration.quasi_static;
+      log << "  Load path t = 0 to " << time_integration.quasi_static_end_time
+          << ", steps " << q.initial_step << " (first), " << q.minimum_step
+          << " to " << q.maximum_step << "; linear solver "
+          << newton->linear_solver_name() << std::endl;
+    }
+
+
+
+    void
+    QuasiStaticSimulation::check(std::ostream &log)
+    {
+      log_model(log);
+    }
+
+
+
+    void
+    QuasiStaticSimulation::run(std::ostream &log)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(model.comm) == 0;
+      log_model(log);
+      std::filesystem::create_directories(output.directory);
+
+      std::vector<std::string> columns = {"time",
+                                          "newton_iterations",
+                                          "internal_energy"};
+      for (const Part &part : model.parts)
+        columns.push_back(part.name + "_internal_energy");
+      const char *xyz[3] = {"_x", "_y", "_z"};
+      for (const BoundaryCondition &bc : model.boundary_conditions)
+        for (const std::string quantity : {"_force", "_moment"})
+          for (unsigned int d = 0; d < 3; ++d)
+            columns.push_back(bc.name + quantity + xyz[d]);
+      postprocess::TimeHistory history(output.directory + "/time_history.csv",
+                                       columns,
+                                       root);
+
+      time_integration::QuasiStaticSolver &s = *newton;
+      // Rows at every converged step (interval 0), else at the first step
+      // on or after each multiple of the interval (pseudo-time).
+      double     next_row  = 0.;
+      const auto write_row = [&]() {
+        std::vector<double> values = {s.time(),
+                                      s.steps().empty() ?
+                                        0. :
+                                        double(s.steps().back().iterations),
+                                      s.internal_energy()};
+        for (unsigned int p = 0; p < model.parts.size(); ++p)
+          values.push_back(p < s.internal_energy_by_group().size() ?
+                             s.internal_energy_by_group()[p] :
+                             0.);
+        std::vector<Tensor<1, 3>> force(model.boundary_conditions.size()),
+          moment(model.boundary_conditions.size());
+        for (unsigned int g = 0; g < condition_of_group.size(); ++g)
+          {
+            force[condition_of_group[g]][direction_of_group[g]] +=
+              s.reactions()[g];
+            moment[condition_of_group[g]] += s.reaction_moments()[g];
+          }
+        for (unsigned int c = 0; c < force.size(); ++c)
+          {
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(force[c][d]);
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(moment[c][d]);
+          }
+        const std::string row = history.write_row(values);
+        if (root && output.echo_history)
+          log << row;
+        next_row =
+          output.history_output_interval > 0. ?
+            (std::floor(s.time() / output.history_output_interval + 1e-9) +
+             1.) *
+              output.history_output_interval :
+            0.;
+      };
+
+      s.initialize();
+      write_row();
+      const double end_time = time_integration.quasi_static_end_time;
+      try
+        {
+          s.run(end_time, log, [&]() {
+            if (s.time() >= next_row * (1. - 1e-12) ||
+                s.time() >= end_time * (1. - 1e-12))
+              write_row();
+          });
+        }
+      catch (const time_integration::QuasiStaticFailure &failure)
+        {
+          history.make_durable();
+          throw std::runtime_error(
+            "Quasi-static run failed: " + std::string(failure.what()) +
+            " (its rows are in " + output.directory + "/time_history.csv)");
+        }
+      if (root)
+        {
+          unsigned int iterations = 0, linear = 0, cutbacks = 0;
+          for (const auto &step : s.steps())
+            {
+              iterations += step.iterations;
+              linear += step.linear_iterations;
+              cutbacks += step.cutbacks;
+            }
+          log << "Finished: " << s.steps().size()
+              << " load steps to t = " << s.time() << ", " << iterations
+              << " Newton iterations, " << linear << " linear iterations, "
+              << cutbacks << " cut-backs" << std::endl;
+        }
+    }
+  } // namespace model
+} // namespace rubberdyn

@@ -1,0 +1,96 @@
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    namespace setup
+    {
+      std::vector<elements::ElementGroup>
+      element_groups(const Model &model)
+      {
+        std::vector<elements::ElementGroup> groups;
+        // A rigid part's group has no cells: no element forces, no step.
+        for (const Part &part : model.parts)
+          groups.push_back(
+            {part.rigid ? std::set<types::material_id>() : part.material_ids,
+             part.law.get(),
+             part.formulation});
+        return groups;
+      }
+
+
+
+      elements::ElementSettings
+      element_settings(const parameters::TimeIntegration &time_integration)
+      {
+        elements::ElementSettings settings;
+        settings.bulk_viscosity_linear = time_integration.bulk_viscosity_linear;
+        settings.bulk_viscosity_quadratic =
+          time_integration.bulk_viscosity_quadratic;
+        settings.fbar_stabilization = time_integration.fbar_stabilization;
+        return settings;
+      }
+
+
+
+      void
+      add_kinematic_constraints(
+        const Model                            &model,
+        time_integration::KinematicConstraints &constraints,
+        std::vector<unsigned int>              &condition_of_group,
+        std::vector<unsigned int>              &direction_of_group)
+      {
+        using time_integration::KinematicConstraints;
+        for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+          {
+            const BoundaryCondition &bc   = model.boundary_conditions[c];
+            const std::string        path = "Boundary conditions/" + bc.name;
+            const auto zero = [](const Point<3> &, double) { return 0.; };
+            const auto add  = [&](const unsigned int               direction,
+                                 const KinematicConstraints::Kind kind,
+                                 const KinematicConstraints::Function &function,
+                                 const bool depends_on_position) {
+              constraints.prescribe(path,
+                                    bc.boundary_ids,
+                                    direction,
+                                    kind,
+                                    function,
+                                    depends_on_position,
+                                    bc.moment_point);
+              condition_of_group.push_back(c);
+              direction_of_group.push_back(direction);
+            };
+            switch (bc.type)
+              {
+                case BoundaryCondition::Type::fixed:
+                  for (const unsigned int d : bc.components)
+                    add(d, KinematicConstraints::Kind::velocity, zero, false);
+                  break;
+                case BoundaryCondition::Type::displacement:
+                case BoundaryCondition::Type::velocity:
+                  for (unsigned int k = 0; k < bc.components.size(); ++k)
+                    add(bc.components[k],
+                        bc.type == BoundaryCondition::Type::velocity ?
+                          KinematicConstraints::Kind::velocity :
+                          KinematicConstraints::Kind::displacement,
+                        bc.functions[k],
+                        bc.depends_on_position);
+                  break;
+                case BoundaryCondition::Type::symmetry:
+                  add(constraints.plane_normal_direction(path, bc.boundary_ids),
+                      KinematicConstraints::Kind::velocity,
+                      zero,
+                      false);
+                  break;
+                case BoundaryCondition::Type::pressure:
+                case BoundaryCondition::Type::traction:
+                  break;
+              }
+          }
+      }
+    } // namespace setup
+  }   // namespace model
+} // namespace rubberdyn

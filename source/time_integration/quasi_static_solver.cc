@@ -1,0 +1,689 @@
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/time_integration/kinematic_constraints.h>
+#include <rubberdyn/time_integration/quasi_static_solver.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace time_integration
+  {
+    namespace
+    {
+      std::string
+      short_number(const double x, const int digits = 3)
+      {
+        std::ostringstream s;
+        s << std::setprecision(digits) << x;
+        return s.str();
+      }
+    } // namespace
+
+
+
+    /**
+     * The linear algebra and the element evaluations of the solver (kept
+     * out of the header: Trilinos headers are heavy).
+     */
+    class QuasiStaticSolver::Implementation
+    {
+    public:
+      Implementation(
+        const DoFHandler<3, 3>                                   &dof_handler,
+        const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+        elements::SolidHexElements                               &elements,
+        const KinematicConstraints                               &constraints,
+        const parameters::QuasiStatic                            &settings,
+        const MPI_Comm                                            comm);
+
+      /** What one residual evaluation gives. */
+      struct Residual
+      {
+        /** Internal force (ghosted, compressed: owned entries valid). */
+        VectorType force;
+        /** Whether an element failed, and the message. */
+        bool        failed = false;
+        std::string failure;
+        /** Norms of the free and constrained (reaction) parts. */
+        double              free_norm = 0., reaction_norm = 0.;
+        double              energy = 0.;
+        std::vector<double> energy_by_group;
+      };
+
+      /** f_int(u) and its norms; u must have its ghosts updated. */
+      void
+      evaluate(const VectorType &u, Residual &r);
+
+      /**
+       * Assemble the tangent at @p u and the right-hand side -r on the free
+       * dofs, with the prescribed increments @p increment of the
+       * constrained dofs (inhomogeneous elimination) if @p predictor.
+       */
+      void
+      assemble(const VectorType &u,
+               const Residual   &r,
+               const VectorType &increment,
+               const bool        predictor);
+
+      /**
+       * Solve the assembled system; the correction goes to @p du (owned
+       * entries, constrained dofs set to @p increment if @p predictor, else
+       * zero). Returns the linear iterations (0 for the direct solver).
+       */
+      unsigned int
+      solve(VectorType &du, const VectorType &increment, const bool predictor);
+
+      /** |du . rhs| over the free dofs (all ranks). */
+      double
+      energy_increment(const VectorType &du) const;
+
+      const DoFHandler<3, 3>                            &dof_handler;
+      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+      elements::SolidHexElements                        &elements;
+      const KinematicConstraints                        &constraints;
+      parameters::QuasiStatic                            settings;
+      MPI_Comm                                           comm;
+      bool                                               use_direct;
+
+      /** Whether each local (owned and ghost) dof is constrained. */
+      std::vector<bool> constrained;
+      IndexSet          owned, relevant;
+      /** The constrained dofs (homogeneous, the pattern of both). */
+      AffineConstraints<double>      homogeneous;
+      TrilinosWrappers::SparseMatrix matrix;
+      TrilinosWrappers::MPI::Vector  rhs, solution;
+      /** Rigid-body modes of the owned dofs, [mode][local dof]. */
+      std::vector<double>                                rigid_body_modes;
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    };
+
+
+
+    QuasiStaticSolver::Implementation::Implementation(
+      const DoFHandler<3, 3>                                   &dof_handler,
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+      elements::SolidHexElements                               &elements,
+      const KinematicConstraints                               &constraints,
+      const parameters::QuasiStatic                            &settings,
+      const MPI_Comm                                            comm)
+      : dof_handler(dof_handler)
+      , partitioner(partitioner)
+      , elements(elements)
+      , constraints(constraints)
+      , settings(settings)
+      , comm(comm)
+    {
+      using LinearSolver = parameters::QuasiStatic::LinearSolver;
+      use_direct         = settings.linear_solver == LinearSolver::direct ||
+                   (settings.linear_solver == LinearSolver::automatic &&
+                    dof_handler.n_dofs() <= settings.direct_solver_limit);
+
+      owned    = partitioner->locally_owned_range();
+      relevant = owned;
+      relevant.add_indices(partitioner->ghost_indices());
+
+      // Constrained flags of the owned dofs, then of the ghosts (a ghost
+      // dof of an owned cell is constrained by its owner's groups).
+      VectorType flag(partitioner);
+      for (const KinematicConstraints::Entry &entry : constraints.entries())
+        flag.local_element(entry.dof) = 1.;
+      flag.update_ghost_values();
+      const unsigned int n_local =
+        partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+      constrained.assign(n_local, false);
+      homogeneous.reinit(relevant);
+      for (unsigned int i = 0; i < n_local; ++i)
+        if (flag.local_element(i) != 0.)
+          {
+            constrained[i] = true;
+            homogeneous.add_line(partitioner->local_to_global(i));
+          }
+      homogeneous.close();
+
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, homogeneous, false);
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      matrix.reinit(owned, owned, dsp, comm);
+      rhs.reinit(owned, comm);
+      solution.reinit(owned, comm);
+
+      if (!use_direct)
+        {
+          // The six rigid-body modes at the owned dofs, from the nodal
+          // coordinates: translations e_d and rotations e_k x (X - X_c)
+          // (centred to keep them well conditioned).
+          std::map<types::global_dof_index, Point<3>> points;
+          DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
+                                               dof_handler,
+                                               points);
+          Point<3> centre;
+          for (const auto &p : points)
+            centre += p.second;
+          double count = points.size();
+          for (unsigned int d = 0; d < 3; ++d)
+            centre[d] = Utilities::MPI::sum(centre[d], comm);
+          count = Utilities::MPI::sum(count, comm);
+          centre /= count;
+          const unsigned int n_owned = partitioner->locally_owned_size();
+          rigid_body_modes.assign(6 * n_owned, 0.);
+          // Component of each owned dof.
+          std::vector<unsigned int>            component(n_owned, 0);
+          std::vector<types::global_dof_index> dofs(24);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(dofs);
+                for (unsigned int i = 0; i < 24; ++i)
+                  if (partitioner->in_local_range(dofs[i]))
+                    component[partitioner->global_to_local(dofs[i])] =
+                      dof_handler.get_fe().system_to_component_index(i).first;
+              }
+          for (unsigned int i = 0; i < n_owned; ++i)
+            {
+              const types::global_dof_index global =
+                partitioner->local_to_global(i);
+              const auto point = points.find(global);
+              Assert(point != points.end(), ExcInternalError());
+              const Tensor<1, 3> x              = point->second - centre;
+              const unsigned int c              = component[i];
+              rigid_body_modes[c * n_owned + i] = 1.;
+              // Rotation about axis k: (e_k x x)_c.
+              for (unsigned int k = 0; k < 3; ++k)
+                {
+                  Tensor<1, 3> axis;
+                  axis[k]                 = 1.;
+                  const Tensor<1, 3> mode = cross_product_3d(axis, x);
+                  rigid_body_modes[(3 + k) * n_owned + i] = mode[c];
+                }
+            }
+        }
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::evaluate(const VectorType &u,
+                                                Residual         &r)
+    {
+      r.force.reinit(partitioner);
+      VectorType                  zero_velocity(partitioner);
+      const std::vector<double>   no_scaling(elements.n_elements(), 1.);
+      elements::ElementStepResult result;
+      elements.compute_forces(u, zero_velocity, no_scaling, r.force, result);
+      r.force.compress(VectorOperation::add);
+
+      r.failed = Utilities::MPI::logical_or(result.failure.failed, comm);
+      r.failure.clear();
+      if (r.failed)
+        {
+          const std::string message =
+            result.failure.failed ?
+              "cell " + result.failure.cell_id + ", " + result.failure.message :
+              "";
+          for (const std::string &m : Utilities::MPI::all_gather(comm, message))
+            if (!m.empty() && r.failure.empty())
+              r.failure = m;
+          return;
+        }
+      double sums[2] = {0., 0.};
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        sums[constrained[i] ? 1 : 0] += std::pow(r.force.local_element(i), 2);
+      Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                          comm,
+                          ArrayView<double>(sums, 2));
+      r.free_norm     = std::sqrt(sums[0]);
+      r.reaction_norm = std::sqrt(sums[1]);
+      if (!std::isfinite(r.free_norm) || !std::isfinite(r.reaction_norm))
+        {
+          r.failed  = true;
+          r.failure = "the residual is not finite";
+          return;
+        }
+      r.energy_by_group = result.internal_energy_by_group;
+      Utilities::MPI::sum(ArrayView<const double>(r.energy_by_group),
+                          comm,
+                          ArrayView<double>(r.energy_by_group));
+      r.energy = Utilities::MPI::sum(result.internal_energy, comm);
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble(const VectorType &u,
+                                                const Residual   &r,
+                                                const VectorType &increment,
+                                                const bool        predictor)
+    {
+      matrix = 0.;
+      rhs    = 0.;
+      // The constraints of this assembly: the prescribed increments as
+      // inhomogeneities in the predictor, none after.
+      AffineConstraints<double> step_constraints(relevant);
+      for (unsigned int i = 0; i < constrained.size(); ++i)
+        if (constrained[i])
+          {
+            const types::global_dof_index global =
+              partitioner->local_to_global(i);
+            step_constraints.add_line(global);
+            if (predictor)
+              step_constraints.set_inhomogeneity(global,
+                                                 increment.local_element(i));
+          }
+      step_constraints.close();
+
+      FullMatrix<double>                   cell_matrix(24, 24);
+      Vector<double>                       cell_rhs(24);
+      std::vector<types::global_dof_index> global(24);
+      elements
+        .compute_tangents(u, [&](const unsigned int *dofs, const double *K) {
+          for (unsigned int i = 0; i < 24; ++i)
+            {
+              global[i] = partitioner->local_to_global(dofs[i]);
+              for (unsigned int j = 0; j < 24; ++j)
+                cell_matrix(i, j) = K[24 * i + j];
+            }
+          cell_rhs = 0.;
+          step_constraints.distribute_local_to_global(cell_matrix,
+                                                      cell_rhs,
+                                                      global,
+                                                      matrix,
+                                                      rhs,
+                                                      predictor);
+        });
+      // -r on the free owned dofs (the residual is already summed). The
+      // constrained rows keep what distribute_local_to_global() put there
+      // (their solution is overwritten in solve(), and their columns are
+      // eliminated).
+      std::vector<types::global_dof_index> indices;
+      std::vector<double>                  values;
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        if (!constrained[i])
+          {
+            indices.push_back(partitioner->local_to_global(i));
+            values.push_back(-r.force.local_element(i));
+          }
+      rhs.add(indices, values);
+      matrix.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+    }
+
+
+
+    unsigned int
+    QuasiStaticSolver::Implementation::solve(VectorType       &du,
+                                             const VectorType &increment,
+                                             const bool        predictor)
+    {
+      solution            = 0.;
+      unsigned int n_iter = 0;
+      if (use_direct)
+        {
+          SolverControl                                  control(1, 0.);
+          TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                              "Amesos_Klu");
+          TrilinosWrappers::SolverDirect                 direct(control, data);
+          direct.solve(matrix, solution, rhs);
+        }
+      else if (rhs.l2_norm() > 0.)
+        {
+          // ML with the six rigid-body modes as its near-null space: the
+          // AdditionalData's list, then the modes by hand (deal.II 9.4's
+          // constant_modes carry translations only).
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          data.elliptic              = true;
+          data.higher_order_elements = false;
+          data.smoother_sweeps       = 2;
+          data.aggregation_threshold = 1e-4;
+          Teuchos::ParameterList              list;
+          std::unique_ptr<Epetra_MultiVector> unused_modes;
+          data.set_parameters(list, unused_modes, matrix);
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension", 6);
+          list.set("null space: vectors", rigid_body_modes.data());
+          amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+          amg->initialize(matrix.trilinos_matrix(), list);
+          SolverControl control(10000,
+                                settings.linear_tolerance * rhs.l2_norm());
+          // CG where the tangent is symmetric (hyperelastic laws: the
+          // element force is an energy gradient), GMRES otherwise, and
+          // GMRES also when CG breaks down: away from equilibrium (a large
+          // predictor, buckling) the symmetric tangent can be indefinite.
+          const auto gmres = [&]() {
+            solution = 0.;
+            TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false,
+                                                                     200);
+            TrilinosWrappers::SolverGMRES solver(control, gmres_data);
+            solver.solve(matrix, solution, rhs, *amg);
+            return control.last_step();
+          };
+          if (elements.has_history())
+            n_iter = gmres();
+          else
+            try
+              {
+                TrilinosWrappers::SolverCG cg(control);
+                cg.solve(matrix, solution, rhs, *amg);
+                n_iter = control.last_step();
+              }
+            catch (const std::exception &)
+              {
+                const unsigned int cg_iterations = control.last_step();
+                n_iter                           = cg_iterations + gmres();
+              }
+        }
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        du.local_element(i) = constrained[i] ?
+                                (predictor ? increment.local_element(i) : 0.) :
+                                solution[partitioner->local_to_global(i)];
+      return n_iter;
+    }
+
+
+
+    double
+    QuasiStaticSolver::Implementation::energy_increment(
+      const VectorType &du) const
+    {
+      double sum = 0.;
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        if (!constrained[i])
+          sum += du.local_element(i) * rhs[partitioner->local_to_global(i)];
+      return std::abs(Utilities::MPI::sum(sum, comm));
+    }
+
+
+
+    QuasiStaticSolver::QuasiStaticSolver(
+      const DoFHandler<3, 3>                                   &dof_handler,
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+      elements::SolidHexElements                               &elements,
+      const KinematicConstraints                               &constraints,
+      const parameters::QuasiStatic                            &settings,
+      const MPI_Comm                                            comm)
+      : impl(std::make_unique<Implementation>(dof_handler,
+                                              partitioner,
+                                              elements,
+                                              constraints,
+                                              settings,
+                                              comm))
+    {
+      u.reinit(partitioner);
+    }
+
+
+
+    QuasiStaticSolver::~QuasiStaticSolver() = default;
+
+
+
+    std::string
+    QuasiStaticSolver::linear_solver_name() const
+    {
+      return impl->use_direct ?
+               "direct (Amesos KLU)" :
+               std::string(impl->elements.has_history() ? "GMRES" : "CG") +
+                 " with ML AMG (6 rigid-body modes)";
+    }
+
+
+
+    void
+    QuasiStaticSolver::initialize()
+    {
+      u.update_ghost_values();
+      Implementation::Residual r;
+      impl->evaluate(u, r);
+      if (r.failed)
+        throw QuasiStaticFailure(
+          "the state at t = " + short_number(current_time, 6) +
+          " fails: " + r.failure);
+      // Reactions and energies of the state.
+      const KinematicConstraints &c = impl->constraints;
+      reaction.assign(c.n_groups(), 0.);
+      reaction_moment.assign(c.n_groups(), Tensor<1, 3>());
+      for (const KinematicConstraints::Entry &entry : c.entries())
+        {
+          const double f = r.force.local_element(entry.dof);
+          reaction[entry.group] += f;
+          Point<3> x = entry.X;
+          for (unsigned int d = 0; d < 3; ++d)
+            x[d] += u.local_element(entry.node_dofs[d]);
+          Tensor<1, 3> force;
+          // The constrained component of this entry.
+          for (unsigned int d = 0; d < 3; ++d)
+            if (entry.node_dofs[d] == entry.dof)
+              force[d] = f;
+          reaction_moment[entry.group] +=
+            cross_product_3d(x - c.moment_point(entry.group), force);
+        }
+      Utilities::MPI::sum(ArrayView<const double>(reaction),
+                          impl->comm,
+                          ArrayView<double>(reaction));
+      for (Tensor<1, 3> &m : reaction_moment)
+        for (unsigned int d = 0; d < 3; ++d)
+          m[d] = Utilities::MPI::sum(m[d], impl->comm);
+      energy          = r.energy;
+      energy_by_group = r.energy_by_group;
+    }
+
+
+
+    void
+    QuasiStaticSolver::run(const double                 end_time,
+                           std::ostream                &log,
+                           const std::function<void()> &on_step)
+    {
+      Implementation                &I = *impl;
+      const parameters::QuasiStatic &s = I.settings;
+      const KinematicConstraints    &c = I.constraints;
+      const bool root       = Utilities::MPI::this_mpi_process(I.comm) == 0;
+      const auto wall_start = std::chrono::steady_clock::now();
+      const auto wall       = [&]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             wall_start)
+          .count();
+      };
+
+      // u is the iterate; u_start the last converged state (for a
+      // cut-back); u_trial the line search's candidate.
+      VectorType               u_start(u), u_trial(u), du(u), increment(u);
+      Implementation::Residual r, r_trial;
+      double                   step = std::min(s.initial_step, s.maximum_step);
+      unsigned int             cutbacks = 0;
+      while (current_time < end_time * (1. - 1e-12))
+        {
+          step = std::min(step, end_time - current_time);
+          // Snap a last sliver onto the end time.
+          if (end_time - (current_time + step) < 1e-3 * step)
+            step = end_time - current_time;
+          const double t_new = current_time + step;
+          if (root)
+            log << "  Step to t = " << short_number(t_new, 6) << " (dt "
+                << short_number(step) << ")" << std::endl;
+
+          // The prescribed increments: a displacement group's g(t_new) -
+          // u_n, zero for the velocity groups (fixed, symmetry).
+          increment = 0.;
+          for (const KinematicConstraints::Entry &entry : c.entries())
+            if (c.kind(entry.group) == KinematicConstraints::Kind::displacement)
+              increment.local_element(entry.dof) =
+                c.prescribed_function_value(entry, t_new) -
+                u.local_element(entry.dof);
+
+          // (The ghosts too: a ghost dof's inhomogeneity enters this
+          // rank's element matrices in assemble().)
+          increment.update_ghost_values();
+          u_start = u;
+          u.update_ghost_values();
+          I.evaluate(u, r);
+          std::string  reason;
+          bool         converged    = false;
+          double       first_energy = 0.;
+          unsigned int linear_total = 0, iteration = 0, growth = 0;
+          double       previous_norm = std::numeric_limits<double>::max();
+          for (; iteration < s.max_iterations; ++iteration)
+            {
+              const bool   predictor = (iteration == 0);
+              unsigned int n_linear  = 0;
+              try
+                {
+                  I.assemble(u, r, increment, predictor);
+                  n_linear = I.solve(du, increment, predictor);
+                }
+              catch (const std::exception &e)
+                {
+                  // (deal.II's NoConvergence has an empty what().)
+                  const std::string what = e.what();
+                  reason =
+                    "the linear solver failed" +
+                    (what.empty() ? std::string(" to converge") : ": " + what);
+                  break;
+                }
+              linear_total += n_linear;
+              const double energy_increment = I.energy_increment(du);
+              if (predictor)
+                first_energy = energy_increment;
+
+              // Backtracking line search: halve the correction while an
+              // element fails or the residual norm does not decrease
+              // (Armijo, factor 1e-4). The predictor's prescribed part is
+              // always taken whole (it is the load), and the predictor
+              // itself is only checked for failures: its starting residual
+              // is the last step's equilibrium.
+              double alpha    = 1.;
+              bool   accepted = false;
+              for (unsigned int trial = 0; trial < 7; ++trial)
+                {
+                  for (unsigned int i = 0;
+                       i < I.partitioner->locally_owned_size();
+                       ++i)
+                    u_trial.local_element(i) =
+                      u.local_element(i) +
+                      (I.constrained[i] ? 1. : alpha) * du.local_element(i);
+                  u_trial.update_ghost_values();
+                  I.evaluate(u_trial, r_trial);
+                  if (!r_trial.failed &&
+                      (predictor || !s.line_search || trial == 6 ||
+                       r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
+                    {
+                      accepted = true;
+                      break;
+                    }
+                  if (!s.line_search)
+                    break;
+                  alpha *= 0.5;
+                }
+              if (!accepted)
+                {
+                  reason = r_trial.failure;
+                  break;
+                }
+              u.swap(u_trial);
+              std::swap(r, r_trial);
+
+              const double scale = std::max(r.reaction_norm, s.residual_floor);
+              const double ratio = r.free_norm / scale;
+              // (Collective: on every rank, not inside the log's if.)
+              const double update = du.linfty_norm();
+              if (root)
+                log << "    iteration " << iteration + 1 << ": residual "
+                    << std::scientific << std::setprecision(3) << r.free_norm
+                    << " kN, relative " << ratio << ", update " << update
+                    << " mm, energy " << energy_increment
+                    << " J, linear iterations " << n_linear
+                    << (alpha < 1. ? ", line search " + short_number(alpha) :
+                                     std::string())
+                    << ", " << std::fixed << std::setprecision(2) << wall()
+                    << " s" << std::defaultfloat << std::setprecision(6)
+                    << std::endl;
+              const bool residual_ok = r.free_norm <= s.residual_floor ||
+                                       ratio <= s.residual_tolerance;
+              const bool energy_ok =
+                r.free_norm <= s.residual_floor ||
+                energy_increment <= s.energy_tolerance * first_energy;
+              if (!predictor && residual_ok && energy_ok)
+                {
+                  converged = true;
+                  ++iteration;
+                  break;
+                }
+              // Divergence: the residual grew in two iterations in a row,
+              // from the third on.
+              if (!predictor && r.free_norm > previous_norm)
+                ++growth;
+              else
+                growth = 0;
+              if (growth >= 2 && iteration >= 2)
+                {
+                  reason = "the residual grows";
+                  break;
+                }
+              previous_norm =
+                predictor ? std::numeric_limits<double>::max() : r.free_norm;
+            }
+          if (!converged && reason.empty())
+            reason = "no convergence in " + std::to_string(s.max_iterations) +
+                     " iterations";
+
+          if (!converged)
+            {
+              // Back to the last converged state, and halve.
+              u = u_start;
+              u.update_ghost_values();
+              ++cutbacks;
+              if (root)
+                log << "  Cut back: " << reason << std::endl;
+              if (cutbacks > s.max_cutbacks || 0.5 * step < s.minimum_step)
+                {
+                  // The history of the last converged state stays current
+                  // (never accepted since), and so do the outputs.
+                  throw QuasiStaticFailure(
+                    "the load step to t = " + short_number(t_new, 6) +
+                    " did not converge (" + reason + ") after " +
+                    std::to_string(cutbacks - 1) + " cut-backs, at a step of " +
+                    short_number(step) + "; the last converged state is t = " +
+                    short_number(current_time, 6));
+                }
+              step *= 0.5;
+              continue;
+            }
+
+          current_time = t_new;
+          records.push_back({t_new, step, iteration, linear_total, cutbacks});
+          cutbacks = 0;
+          // Reactions and energies of the converged state (this evaluation
+          // writes the same new history as the last iteration's), then its
+          // history becomes the start of the next step.
+          initialize();
+          I.elements.accept_history();
+          on_step();
+          if (iteration <= 4)
+            step = std::min(1.5 * step, s.maximum_step);
+        }
+    }
+  } // namespace time_integration
+} // namespace rubberdyn
