@@ -51,7 +51,8 @@ namespace rubberdyn
                         "run continues exactly as the original would have; "
                         "time_history.csv keeps its rows before the "
                         "checkpoint, the ParaView series goes on in "
-                        "solution_restart.pvd (.xdmf).");
+                        "solution_restart_<k>.pvd (.xdmf) for the k-th restart "
+                        "(doc/restarts.md).");
       prm.leave_subsection();
     }
 
