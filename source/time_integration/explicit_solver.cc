@@ -145,7 +145,6 @@ namespace rubberdyn
       , group_viscous_work_ahead(settings.n_groups, 0.)
       , group_gravity_increment(settings.n_groups + 1, 0.)
       , body_energy(bodies.size())
-      , drive_increment(bodies.size())
     {
       for (VectorType *vector :
            {&u, &v, &f, &mass, &inverse_mass, &gravity_force})
@@ -467,15 +466,10 @@ namespace rubberdyn
       by_group.insert(by_group.end(),
                       group_gravity_increment.begin(),
                       group_gravity_increment.begin() + settings.n_groups);
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        {
-          const BodyEnergy &body = body_energy[b];
-          for (const double value :
-               {body.kinetic, body.gravity_work, body.drive_work})
-            by_group.push_back(value);
-          for (unsigned int d = 0; d < 3; ++d)
-            by_group.push_back(drive_increment[b][d]);
-        }
+      for (const BodyEnergy &body : body_energy)
+        for (const double value :
+             {body.kinetic, body.gravity_work, body.drive_work})
+          by_group.push_back(value);
       write_doubles(out, by_group.data(), by_group.size());
       for (const model::ForceContribution *contribution : contributions)
         contribution->save(out);
@@ -554,7 +548,7 @@ namespace rubberdyn
           read_doubles(in, reaction_work_ahead.data(),
                        reaction_work_ahead.size(), "reaction work");
           const unsigned int n_groups = settings.n_groups;
-          std::vector<double> by_group(9 * n_groups + 6 * bodies.size());
+          std::vector<double> by_group(9 * n_groups + 3 * bodies.size());
           read_doubles(in, by_group.data(), by_group.size(), "part energies");
           for (unsigned int g = 0; g < n_groups; ++g)
             {
@@ -570,10 +564,8 @@ namespace rubberdyn
             }
           for (unsigned int b = 0; b < bodies.size(); ++b)
             {
-              const double *values = &by_group[9 * n_groups + 6 * b];
+              const double *values = &by_group[9 * n_groups + 3 * b];
               body_energy[b]       = {values[0], values[1], values[2]};
-              for (unsigned int d = 0; d < 3; ++d)
-                drive_increment[b][d] = values[3 + d];
             }
           for (model::ForceContribution *contribution : contributions)
             contribution->load(in);
@@ -974,14 +966,16 @@ namespace rubberdyn
               // Where the body's motion is prescribed, the drive does the
               // work minus the solid's force on it times the displacement,
               // by the trapezoidal rule: the half with the force at t_n on
-              // the last increment now (see the displacement update).
+              // the last step's increment now (body.velocity is still the
+              // one of that step; see the displacement update).
               for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const double work =
-                    -0.5 * body.contact_force[d] * drive_increment[b][d];
-                  energy.external_work += work;
-                  body_energy[b].drive_work += work;
-                }
+                if (!body.moves_freely(d))
+                  {
+                    const double work = -0.5 * body.contact_force[d] *
+                                        (last_time_step * body.velocity[d]);
+                    energy.external_work += work;
+                    body_energy[b].drive_work += work;
+                  }
               Tensor<1, 3> v_new = body.velocity;
               const Tensor<1, 3> prescribed =
                 body.prescribed_velocity ?
@@ -1077,7 +1071,6 @@ namespace rubberdyn
               const Tensor<1, 3> increment = new_step * body.velocity;
               body.displacement += increment;
               body.rotation = body.rotation_after(new_step);
-              drive_increment[b] = Tensor<1, 3>();
               for (unsigned int d = 0; d < 3; ++d)
                 if (!body.moves_freely(d))
                   {
@@ -1087,7 +1080,6 @@ namespace rubberdyn
                       -0.5 * body.contact_force[d] * increment[d];
                     energy.external_work += work;
                     body_energy[b].drive_work += work;
-                    drive_increment[b][d] = increment[d];
                   }
                 else if (!body.carries_nodes)
                   {

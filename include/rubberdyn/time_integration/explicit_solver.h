@@ -505,12 +505,6 @@ namespace rubberdyn
        */
       std::vector<double>     group_gravity_increment;
       std::vector<BodyEnergy> body_energy;
-      /**
-       * Each body's displacement in its prescribed directions in the last
-       * step (0 in the free ones), for the second half of the drive's
-       * trapezoidal work.
-       */
-      std::vector<Tensor<1, 3>> drive_increment;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
       /** Gravity work of the last displacement update, booked next step. */
