@@ -33,18 +33,26 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# build [TARGET...]: configure if needed, then build 'all' and the targets.
 build() {
   if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     cmake -S "$SOURCE_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$BUILD_DIR" -j "$JOBS"
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target all "$@"
 }
 
 # Open MPI refuses to run as root without these (CI runs as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 install_missing_packages
-build
+case "$ACTION" in
+  test)
+    # The unit tests' executables in the same parallel build, not one by
+    # one inside ctest (see tests/CMakeLists.txt).
+    build rubberdyn_test_executables
+    ;;
+  *) build ;;
+esac
 case "$ACTION" in
   build) ;;
   run)
