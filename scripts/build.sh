@@ -13,7 +13,7 @@ BUILD_DIR=${RUBBERDYN_BUILD_DIR:-$SOURCE_DIR/build}
 JOBS=${RUBBERDYN_JOBS:-$(nproc)}
 ACTION=${1:-build}
 
-PACKAGES=(cmake make g++ libdeal.ii-dev numdiff ccache openmpi-bin perl)
+PACKAGES=(cmake make g++ lld libdeal.ii-dev numdiff ccache openmpi-bin perl)
 
 install_missing_packages() {
   local missing=()
