@@ -61,6 +61,11 @@ case "$ACTION" in
     "$BUILD_DIR/rubberdyn" --default
     ;;
   test)
+    # ctest runs two tests at once on two cores, and each MPI test's ranks
+    # spin while they wait for a message unless told to yield: two 2-rank
+    # tests are four spinning processes on two cores, whose waits last
+    # until the spinning partner is descheduled. Yielding changes no result.
+    export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
     ctest --test-dir "$BUILD_DIR" -j "$JOBS" --output-on-failure
     ;;
   *)
