@@ -13,7 +13,7 @@ BUILD_DIR=${RUBBERDYN_BUILD_DIR:-$SOURCE_DIR/build}
 JOBS=${RUBBERDYN_JOBS:-$(nproc)}
 ACTION=${1:-build}
 
-PACKAGES=(cmake make g++ libdeal.ii-dev numdiff ccache openmpi-bin perl)
+PACKAGES=(cmake make g++ lld libdeal.ii-dev numdiff ccache openmpi-bin perl)
 
 install_missing_packages() {
   local missing=()
@@ -33,18 +33,26 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# build [TARGET...]: configure if needed, then build 'all' and the targets.
 build() {
   if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     cmake -S "$SOURCE_DIR" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$BUILD_DIR" -j "$JOBS"
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target all "$@"
 }
 
 # Open MPI refuses to run as root without these (CI runs as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 install_missing_packages
-build
+case "$ACTION" in
+  test)
+    # The unit tests' executables in the same parallel build, not one by
+    # one inside ctest (see tests/CMakeLists.txt).
+    build rubberdyn_test_executables
+    ;;
+  *) build ;;
+esac
 case "$ACTION" in
   build) ;;
   run)
@@ -53,6 +61,11 @@ case "$ACTION" in
     "$BUILD_DIR/rubberdyn" --default
     ;;
   test)
+    # ctest runs two tests at once on two cores, and each MPI test's ranks
+    # spin while they wait for a message unless told to yield: two 2-rank
+    # tests are four spinning processes on two cores, whose waits last
+    # until the spinning partner is descheduled. Yielding changes no result.
+    export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
     ctest --test-dir "$BUILD_DIR" -j "$JOBS" --output-on-failure
     ;;
   *)

@@ -181,7 +181,7 @@ namespace rubberdyn
        * banner, whitespace folded to one line.
        */
       std::string
-      message_of(const dealii::ExceptionBase &exception)
+      exception_message(const dealii::ExceptionBase &exception)
       {
         std::ostringstream info;
         exception.print_info(info);
@@ -1430,7 +1430,7 @@ namespace rubberdyn
       catch (const dealii::ExceptionBase &exception)
         {
           scanner.fail("deal.II cannot build a mesh from this file: " +
-                       message_of(exception));
+                       exception_message(exception));
         }
     }
   } // namespace io

@@ -7,10 +7,12 @@
 
 cmake_minimum_required(VERSION 3.18) # find_program(REQUIRED)
 
-# The first line of the compile command of source/app/command_line.cc.
+# The first line of the first compile command of the core library (a
+# source of its own or, in a unity build, a batch of sources: the launcher
+# is the same for all).
 function(compile_command _build_dir _result)
   file(STRINGS ${_build_dir}/CMakeFiles/rubberdyn_core.dir/build.make _lines
-    REGEX "command_line\\.cc\\.o -c ")
+    REGEX "\\.o -c ")
   list(GET _lines 0 _line)
   string(STRIP "${_line}" _line)
   set(${_result} "${_line}" PARENT_SCOPE)
