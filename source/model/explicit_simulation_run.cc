@@ -523,7 +523,9 @@ namespace rubberdyn
               throw StopRequested();
             }
         const auto now = std::chrono::steady_clock::now();
-        if (root && now - last_progress > std::chrono::seconds(5))
+        if (root && output.progress_interval > 0. &&
+            now - last_progress >
+              std::chrono::duration<double>(output.progress_interval))
           {
             const double elapsed =
               std::chrono::duration<double>(now - wall_start).count();

@@ -44,6 +44,14 @@ namespace rubberdyn
                         Patterns::Bool(),
                         "Also print every row of time_history.csv to the "
                         "terminal (for regression tests).");
+      prm.declare_entry("Progress interval",
+                        "5",
+                        Patterns::Double(0.),
+                        "Wall-clock time between the progress lines of an "
+                        "explicit run in the log (s): step, time, step size "
+                        "and the estimated time left. 0 prints none (for "
+                        "logs compared in regression tests: the lines depend "
+                        "on the machine's speed).");
       prm.declare_entry("History output interval",
                         "0.05",
                         Patterns::Double(0.),
@@ -151,6 +159,7 @@ namespace rubberdyn
         postprocess::FieldOutput::parse_format(prm.get("Field output format"));
       history_output_interval = prm.get_double("History output interval");
       echo_history            = prm.get_bool("Echo time history");
+      progress_interval       = prm.get_double("Progress interval");
       checkpoint_interval     = prm.get_double("Checkpoint interval");
       restart                 = prm.get_bool("Restart from checkpoint");
       history_nodes           = parse_history_nodes(prm.get("History nodes"));

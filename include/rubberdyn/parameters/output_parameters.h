@@ -33,6 +33,8 @@ namespace rubberdyn
       double history_output_interval = 0.05;
       /** Print every history row to the log too. */
       bool echo_history = false;
+      /** Wall-clock time between progress lines in the log (s); 0: none. */
+      double progress_interval = 5.;
       /** Time between checkpoints (ms); 0: none. */
       double checkpoint_interval = 0.;
       /** Continue from the checkpoint in the output directory. */
