@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/elements/mixed_up_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
@@ -37,6 +38,13 @@ namespace rubberdyn
                "Rigid surfaces/Names");
       for (const Part &part : model.parts)
         {
+          if (part.formulation == elements::Formulation::mixed_up &&
+              part.law->n_state_variables() > 0)
+            throw InputError("Parts/" + part.name + "/Element formulation",
+                             "'mixed u-p' takes hyperelastic laws only; the "
+                             "law of part '" +
+                               part.name + "' (" + part.law->name() +
+                               ") keeps a history; use 'F-bar'");
           if (part.rigid)
             refuse("the rigid part '" + part.name + "'",
                    "Parts/" + part.name + "/Model");
@@ -79,11 +87,25 @@ namespace rubberdyn
       , title(title)
     {
       check_supported(model, time_integration, output);
-      elements = std::make_unique<elements::SolidHexElements>();
-      elements->initialize(model.dof_handler,
-                           model.partitioner,
-                           setup::element_groups(model),
-                           setup::element_settings(time_integration));
+      // The mixed u-p element on the model's Q2 dofs, or the explicit
+      // engine's hexahedra (F-bar, displacement) on its Q1 dofs.
+      if (model.uses_mixed_up())
+        {
+          auto mixed = std::make_unique<elements::MixedUPElements>();
+          mixed->initialize(model.dof_handler,
+                            model.partitioner,
+                            setup::element_groups(model));
+          elements = std::move(mixed);
+        }
+      else
+        {
+          auto hexes = std::make_unique<elements::SolidHexElements>();
+          hexes->initialize(model.dof_handler,
+                            model.partitioner,
+                            setup::element_groups(model),
+                            setup::element_settings(time_integration));
+          elements = std::move(hexes);
+        }
       constraints = std::make_unique<time_integration::KinematicConstraints>(
         model.dof_handler,
         model.partitioner);

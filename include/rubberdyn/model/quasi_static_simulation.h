@@ -13,7 +13,7 @@ namespace rubberdyn
 {
   namespace elements
   {
-    class SolidHexElements;
+    class ImplicitElements;
   }
   namespace time_integration
   {
@@ -97,7 +97,7 @@ namespace rubberdyn
       parameters::TimeIntegration                             time_integration;
       parameters::Output                                      output;
       std::string                                             title;
-      std::unique_ptr<elements::SolidHexElements>             elements;
+      std::unique_ptr<elements::ImplicitElements>             elements;
       std::unique_ptr<time_integration::KinematicConstraints> constraints;
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
       /** Boundary condition and direction of each constraint group. */

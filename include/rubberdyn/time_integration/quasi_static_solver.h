@@ -25,7 +25,7 @@ namespace rubberdyn
 {
   namespace elements
   {
-    class SolidHexElements;
+    class ImplicitElements;
   }
 
   namespace time_integration
@@ -70,11 +70,13 @@ namespace rubberdyn
      * 6.3). No inertia, no external loads other than the prescribed
      * displacements (the Model study refuses the rest for now).
      *
-     * The residual is the internal force of elements::SolidHexElements at
-     * zero velocity, the very function the explicit solver integrates, and
-     * the tangent its exact derivative
-     * (elements::SolidHexElements::compute_tangents()), so that a converged
-     * state is an explicit equilibrium and Newton converges quadratically.
+     * The elements come through elements::ImplicitElements: the residual
+     * and its exact tangent of elements::SolidHexElements (the internal
+     * force of the explicit engine at zero velocity, the very function the
+     * explicit solver integrates, so that a converged state is an explicit
+     * equilibrium) or of elements::MixedUPElements (Q2 with condensed
+     * pressure and dilatation on an FE_Q(2) dof handler); either way
+     * Newton converges quadratically.
      *
      * Each load step from t_n to t_{n+1}: the first iteration solves
      * $K \delta u = -r$ with $\delta u$ prescribed on the constrained dofs
@@ -113,7 +115,7 @@ namespace rubberdyn
       QuasiStaticSolver(
         const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-        elements::SolidHexElements                               &elements,
+        elements::ImplicitElements                               &elements,
         const KinematicConstraints                               &constraints,
         const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm);
