@@ -47,8 +47,8 @@ namespace rubberdyn
        * The new history of inelastic laws is kept until accept_history().
        */
       virtual void
-      compute_residual(const VectorType &u,
-                       VectorType       &f,
+      compute_residual(const VectorType  &u,
+                       VectorType        &f,
                        ElementStepResult &result) = 0;
 
       /**

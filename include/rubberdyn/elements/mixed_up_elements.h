@@ -77,10 +77,10 @@ namespace rubberdyn
        *   with history, or a material id is in two groups.
        */
       void
-      initialize(const DoFHandler<3, 3> &dof_handler,
-                 const std::shared_ptr<const Utilities::MPI::Partitioner>
-                   &                              partitioner,
-                 const std::vector<ElementGroup> &groups);
+      initialize(
+        const DoFHandler<3, 3>                                   &dof_handler,
+        const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+        const std::vector<ElementGroup>                          &groups);
 
       unsigned int
       n_dofs_per_element() const override
@@ -144,8 +144,8 @@ namespace rubberdyn
        * positive in tension) at its Gauss points, for tests and output.
        */
       void
-      condensed_fields(const VectorType         &u,
-                       const unsigned int        e,
+      condensed_fields(const VectorType        &u,
+                       const unsigned int       e,
                        std::array<double, n_q> &dilatation,
                        std::array<double, n_q> &pressure) const;
 
@@ -183,7 +183,7 @@ namespace rubberdyn
                State         &state,
                std::string   &message) const;
 
-      std::vector<Element>                            elements;
+      std::vector<Element>                             elements;
       std::vector<const materials::MaterialModel<3> *> group_laws;
     };
   } // namespace elements
