@@ -110,8 +110,29 @@ namespace rubberdyn
                 return 0;
               }
             // A study may find bad input only while it runs (before it
-            // writes anything); that error names the file too.
-            study->run(std::cout);
+            // writes anything); that error names the file too, and so does
+            // a run that stops (an element failure, a step that cannot
+            // converge): the user sees which of their runs it was.
+            try
+              {
+                study->run(std::cout);
+              }
+            catch (const InputError &)
+              {
+                throw;
+              }
+            catch (const InvertedMaterialError &error)
+              {
+                report_error("in the run of parameter file '" + filename +
+                             "': " + error.what());
+                return 3;
+              }
+            catch (const std::exception &error)
+              {
+                report_error("in the run of parameter file '" + filename +
+                             "': " + error.what());
+                return 1;
+              }
           }
         catch (const InputError &error)
           {

@@ -10,6 +10,7 @@
 #include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/history_columns.h>
+#include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -731,6 +732,11 @@ namespace rubberdyn
       add_postprocessor(std::make_unique<InteractionEnergyColumns>(
         model, condition_of_group, surface_loads.get(), condition_of_load,
         surfaces));
+      if (!output.history_nodes.empty())
+        add_postprocessor(std::make_unique<postprocess::HistoryNodeColumns>(
+          std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
+                                                      model.partitioner,
+                                                      output.history_nodes)));
     }
 
 

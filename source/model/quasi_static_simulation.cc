@@ -7,6 +7,8 @@
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/model/surface_loads.h>
+#include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
@@ -55,14 +57,20 @@ namespace rubberdyn
         }
       for (const BoundaryCondition &bc : model.boundary_conditions)
         {
-          const std::string type =
-            bc.type == BoundaryCondition::Type::velocity ? "velocity" :
-            bc.type == BoundaryCondition::Type::pressure ? "pressure" :
-            bc.type == BoundaryCondition::Type::traction ? "traction" :
-                                                           "";
-          if (!type.empty())
-            refuse("the " + type + " condition '" + bc.name + "'",
+          // A velocity has no meaning on a load path of pseudo-time.
+          if (bc.type == BoundaryCondition::Type::velocity)
+            refuse("the velocity condition '" + bc.name + "'",
                    "Boundary conditions/" + bc.name + "/Type");
+          // SurfaceLoads integrates bilinear faces of Q1 nodes; the mixed
+          // u-p element's Q2 face nodes would get an inconsistent load.
+          const bool load = bc.type == BoundaryCondition::Type::traction ||
+                            bc.type == BoundaryCondition::Type::pressure;
+          for (const Part &part : model.parts)
+            if (load && part.formulation == elements::Formulation::mixed_up)
+              throw InputError("Boundary conditions/" + bc.name + "/Type",
+                               "the mixed u-p element (part '" + part.name +
+                                 "') does not take tractions and pressures "
+                                 "yet; use 'F-bar' for this model");
         }
       if (model.gravity.norm() != 0.)
         refuse("gravity", "Model/Gravity");
@@ -113,11 +121,37 @@ namespace rubberdyn
                                        *constraints,
                                        condition_of_group,
                                        direction_of_group);
+      // Pressures and tractions: one contribution for all of them, as in
+      // the explicit run.
+      std::vector<BoundaryCondition> loads;
+      for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+        {
+          const BoundaryCondition &bc = model.boundary_conditions[c];
+          if (bc.type == BoundaryCondition::Type::pressure ||
+              bc.type == BoundaryCondition::Type::traction)
+            {
+              loads.push_back(bc);
+              condition_of_load.push_back(c);
+            }
+        }
+      std::vector<ForceContribution *> contributions;
+      if (!loads.empty())
+        {
+          surface_loads = std::make_unique<SurfaceLoads>(model.dof_handler,
+                                                         model.partitioner,
+                                                         loads);
+          contributions.push_back(surface_loads.get());
+        }
+      history_nodes =
+        std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
+                                                    model.partitioner,
+                                                    output.history_nodes);
       newton = std::make_unique<time_integration::QuasiStaticSolver>(
         model.dof_handler,
         model.partitioner,
         *elements,
         *constraints,
+        contributions,
         time_integration.quasi_static,
         model.comm);
     }
@@ -176,6 +210,8 @@ namespace rubberdyn
         for (const std::string quantity : {"_force", "_moment"})
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(bc.name + quantity + xyz[d]);
+      for (const std::string &column : history_nodes->columns())
+        columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
                                        columns,
                                        root);
@@ -202,6 +238,17 @@ namespace rubberdyn
               s.reactions()[g];
             moment[condition_of_group[g]] += s.reaction_moments()[g];
           }
+        // A load's columns are its resultant on the body (collective).
+        if (surface_loads)
+          {
+            const std::vector<SurfaceLoads::Resultant> resultants =
+              surface_loads->resultants();
+            for (unsigned int l = 0; l < resultants.size(); ++l)
+              {
+                force[condition_of_load[l]] += resultants[l].force;
+                moment[condition_of_load[l]] += resultants[l].moment;
+              }
+          }
         for (unsigned int c = 0; c < force.size(); ++c)
           {
             for (unsigned int d = 0; d < 3; ++d)
@@ -209,6 +256,7 @@ namespace rubberdyn
             for (unsigned int d = 0; d < 3; ++d)
               values.push_back(moment[c][d]);
           }
+        history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);
         if (root && output.echo_history)
           log << row;

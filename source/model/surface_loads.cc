@@ -414,7 +414,10 @@ namespace rubberdyn
       has_previous = header[1] != 0.;
       for (Load &load : loads)
         {
-          binary_io::read_doubles(in, &load.work, 1, "work of load " + load.name);
+          binary_io::read_doubles(in,
+                                  &load.work,
+                                  1,
+                                  "work of load " + load.name);
           load.work_pending = 0.;
           binary_io::read_doubles(in,
                                   load.previous_force.data(),
@@ -426,6 +429,93 @@ namespace rubberdyn
                                   "displacements of load " + load.name);
           load.force        = load.previous_force;
           load.displacement = load.previous_displacement;
+        }
+    }
+
+
+
+    bool
+    SurfaceLoads::supports_implicit() const
+    {
+      return true;
+    }
+
+
+
+    bool
+    SurfaceLoads::symmetric_tangent() const
+    {
+      for (const Load &load : loads)
+        if (load.type == BoundaryCondition::Type::pressure)
+          return false;
+      return true;
+    }
+
+
+
+    void
+    SurfaceLoads::add_tangents(const EvaluationPoint &point,
+                               const TangentBlock    &add) const
+    {
+      const auto skew = [](const Tensor<1, 3> &v) {
+        // [v]x with [v]x w = v x w.
+        Tensor<2, 3> m;
+        m[0][1] = -v[2];
+        m[0][2] = v[1];
+        m[1][0] = v[2];
+        m[1][2] = -v[0];
+        m[2][0] = -v[1];
+        m[2][1] = v[0];
+        return m;
+      };
+      std::vector<unsigned int>   dofs(12);
+      std::vector<double>         K(144);
+      std::array<Tensor<1, 3>, 4> x;
+      for (const Load &load : loads)
+        {
+          if (load.type != BoundaryCondition::Type::pressure)
+            continue;
+          const double uniform_pressure =
+            load.depends_on_position ?
+              0. :
+              load.functions[0](Point<3>(), point.time);
+          for (unsigned int f = 0; f < load.face_nodes.size(); ++f)
+            {
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  const unsigned int n = load.face_nodes[f][a];
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      dofs[3 * a + d] = load.node_dofs[n][d];
+                      x[a][d] =
+                        load.node_position[n][d] +
+                        point.displacement.local_element(load.node_dofs[n][d]);
+                    }
+                }
+              std::fill(K.begin(), K.end(), 0.);
+              for (unsigned int q = 0; q < 4; ++q)
+                {
+                  const double p =
+                    load.depends_on_position ?
+                      load.functions[0](load.quadrature_points[f][q],
+                                        point.time) :
+                      uniform_pressure;
+                  const Tensor<2, 3> x_xi  = skew(combine(shape_d_xi, q, x));
+                  const Tensor<2, 3> x_eta = skew(combine(shape_d_eta, q, x));
+                  for (unsigned int a = 0; a < 4; ++a)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      {
+                        const Tensor<2, 3> block =
+                          p * shape_weight[4 * q + a] *
+                          (shape_d_eta[4 * q + b] * x_xi -
+                           shape_d_xi[4 * q + b] * x_eta);
+                        for (unsigned int i = 0; i < 3; ++i)
+                          for (unsigned int j = 0; j < 3; ++j)
+                            K[12 * (3 * a + i) + 3 * b + j] += block[i][j];
+                      }
+                }
+              add(dofs, K);
+            }
         }
     }
 

@@ -1,6 +1,11 @@
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
+#include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/parameters/output_parameters.h>
+
+#include <cmath>
+#include <stdexcept>
 
 namespace rubberdyn
 {
@@ -18,10 +23,13 @@ namespace rubberdyn
                         "Directory for all results; created if missing. "
                         "Relative paths are relative to the working "
                         "directory.");
-      prm.declare_entry("Field output interval", "1", Patterns::Double(0.),
+      prm.declare_entry("Field output interval",
+                        "1",
+                        Patterns::Double(0.),
                         "Time between ParaView outputs (ms); 0 writes none.");
       prm.declare_entry(
-        "Field output format", "vtu",
+        "Field output format",
+        "vtu",
         Patterns::Selection(postprocess::FieldOutput::format_names()),
         "'vtu': per output time a solution_NNNN.pvtu with one .vtu per rank, "
         "indexed by solution.pvd. 'hdf5' (for large runs): per output time "
@@ -31,19 +39,36 @@ namespace rubberdyn
         "mesh with displacement, velocity (nodal), Cauchy stress "
         "components, von Mises stress, pressure (GPa), J, MPI rank, part "
         "id and material id (cell values).");
-      prm.declare_entry("Echo time history", "false", Patterns::Bool(),
+      prm.declare_entry("Echo time history",
+                        "false",
+                        Patterns::Bool(),
                         "Also print every row of time_history.csv to the "
                         "terminal (for regression tests).");
-      prm.declare_entry("History output interval", "0.05",
+      prm.declare_entry("History output interval",
+                        "0.05",
                         Patterns::Double(0.),
                         "Time between rows of time_history.csv (ms); 0 "
                         "writes every step.");
-      prm.declare_entry("Checkpoint interval", "0", Patterns::Double(0.),
+      prm.declare_entry(
+        "History nodes",
+        "",
+        Patterns::Anything(),
+        "Mesh nodes whose displacement goes to time_history.csv (LS-DYNA's "
+        "*DATABASE_HISTORY_NODE): 'name: x, y, z' entries separated by ';', "
+        "the point in the reference configuration (mm); each adds the "
+        "columns <name>_displacement_x, _y, _z (mm). A node of the mesh must "
+        "lie at the point (within 1e-6 of the mesh's size); names are "
+        "letters, digits and '_'. Empty: none.");
+      prm.declare_entry("Checkpoint interval",
+                        "0",
+                        Patterns::Double(0.),
                         "Time between checkpoints (ms), written to the "
                         "directory 'checkpoint' in the output directory (one "
                         "binary file per rank plus study.txt, each replacing "
                         "the previous one); 0 writes none.");
-      prm.declare_entry("Restart from checkpoint", "false", Patterns::Bool(),
+      prm.declare_entry("Restart from checkpoint",
+                        "false",
+                        Patterns::Bool(),
                         "Continue from the checkpoint in the output "
                         "directory instead of starting at t = 0, with the "
                         "same number of ranks and the same model parameters "
@@ -54,6 +79,64 @@ namespace rubberdyn
                         "solution_restart_<k>.pvd (.xdmf) for the k-th restart "
                         "(doc/restarts.md).");
       prm.leave_subsection();
+    }
+
+
+
+    std::vector<Output::HistoryNode>
+    Output::parse_history_nodes(const std::string &text)
+    {
+      const std::string        path = "Output/History nodes";
+      std::vector<HistoryNode> nodes;
+      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+        {
+          const std::size_t colon = entry.find(':');
+          if (colon == std::string::npos)
+            throw InputError(path,
+                             "the entry '" + entry +
+                               "' is not of the form 'name: x, y, z'");
+          HistoryNode node;
+          node.name = Utilities::trim(entry.substr(0, colon));
+          if (node.name.empty() ||
+              node.name.find_first_not_of(
+                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                "0123456789_") != std::string::npos)
+            throw InputError(path,
+                             "the name '" + node.name + "' of the entry '" +
+                               entry +
+                               "' must be letters, digits and '_' only");
+          for (const HistoryNode &other : nodes)
+            if (other.name == node.name)
+              throw InputError(path,
+                               "the name '" + node.name + "' is given twice");
+          const std::vector<std::string> coordinates =
+            Utilities::split_string_list(entry.substr(colon + 1), ',');
+          if (coordinates.size() != 3)
+            throw InputError(path,
+                             "the point of '" + node.name +
+                               "' needs three coordinates x, y, z (mm), not '" +
+                               Utilities::trim(entry.substr(colon + 1)) + "'");
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              try
+                {
+                  std::size_t used = 0;
+                  node.point[d]    = std::stod(coordinates[d], &used);
+                  if (used != coordinates[d].size() ||
+                      !std::isfinite(node.point[d]))
+                    throw std::invalid_argument("");
+                }
+              catch (const std::exception &)
+                {
+                  throw InputError(path,
+                                   "the coordinate '" + coordinates[d] +
+                                     "' of '" + node.name +
+                                     "' is not a finite number");
+                }
+            }
+          nodes.push_back(node);
+        }
+      return nodes;
     }
 
 
@@ -70,6 +153,7 @@ namespace rubberdyn
       echo_history            = prm.get_bool("Echo time history");
       checkpoint_interval     = prm.get_double("Checkpoint interval");
       restart                 = prm.get_bool("Restart from checkpoint");
+      history_nodes           = parse_history_nodes(prm.get("History nodes"));
       prm.leave_subsection();
     }
   } // namespace parameters

@@ -17,6 +17,7 @@
 
 #include <rubberdyn/elements/implicit_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
@@ -58,26 +59,35 @@ namespace rubberdyn
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
         elements::ImplicitElements                               &elements,
         const KinematicConstraints                               &constraints,
+        const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm);
 
       /** What one residual evaluation gives. */
       struct Residual
       {
-        /** Internal force (ghosted, compressed: owned entries valid). */
+        /**
+         * The residual f_int - f_ext: the elements' internal force minus
+         * the loads (ghosted, compressed: owned entries valid).
+         */
         VectorType force;
         /** Whether an element failed, and the message. */
         bool        failed = false;
         std::string failure;
-        /** Norms of the free and constrained (reaction) parts. */
-        double              free_norm = 0., reaction_norm = 0.;
+        /**
+         * Norms of the free and constrained (reaction) parts, and of the
+         * loads on the free dofs.
+         */
+        double              free_norm = 0., reaction_norm = 0., load_norm = 0.;
         double              energy = 0.;
         std::vector<double> energy_by_group;
       };
 
-      /** f_int(u) and its norms; u must have its ghosts updated. */
+      /**
+       * f_int(u) - f_ext(t) and its norms; u must have its ghosts updated.
+       */
       void
-      evaluate(const VectorType &u, Residual &r);
+      evaluate(const VectorType &u, const double t, Residual &r);
 
       /**
        * Assemble the tangent at @p u and the right-hand side -r on the free
@@ -86,9 +96,14 @@ namespace rubberdyn
        */
       void
       assemble(const VectorType &u,
+               const double      t,
                const Residual   &r,
                const VectorType &increment,
                const bool        predictor);
+
+      /** Whether the assembled tangent is symmetric (CG may solve it). */
+      bool
+      symmetric() const;
 
       /**
        * Solve the assembled system; the correction goes to @p du (owned
@@ -106,9 +121,12 @@ namespace rubberdyn
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       elements::ImplicitElements                        &elements;
       const KinematicConstraints                        &constraints;
-      parameters::QuasiStatic                            settings;
-      MPI_Comm                                           comm;
-      bool                                               use_direct;
+      /** The loads (and later contact): forces and tangents beside the
+       * elements'. */
+      std::vector<model::ForceContribution *> loads;
+      parameters::QuasiStatic                 settings;
+      MPI_Comm                                comm;
+      bool                                    use_direct;
 
       /** Whether each local (owned and ghost) dof is constrained. */
       std::vector<bool> constrained;
@@ -120,6 +138,9 @@ namespace rubberdyn
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
       std::vector<double>                                rigid_body_modes;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+      /** What the contributions see besides u and t: no velocity, no mass. */
+      VectorType                    zero;
+      std::vector<model::RigidBody> no_bodies;
     };
 
 
@@ -129,15 +150,23 @@ namespace rubberdyn
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
       elements::ImplicitElements                               &elements,
       const KinematicConstraints                               &constraints,
+      const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm)
       : dof_handler(dof_handler)
       , partitioner(partitioner)
       , elements(elements)
       , constraints(constraints)
+      , loads(loads)
       , settings(settings)
       , comm(comm)
     {
+      for (const model::ForceContribution *load : loads)
+        AssertThrow(load->supports_implicit(),
+                    ExcMessage("The quasi-static solver cannot use the "
+                               "force contribution '" +
+                               load->name() + "'"));
+      zero.reinit(partitioner);
       using LinearSolver = parameters::QuasiStatic::LinearSolver;
       use_direct         = settings.linear_solver == LinearSolver::direct ||
                    (settings.linear_solver == LinearSolver::automatic &&
@@ -229,12 +258,29 @@ namespace rubberdyn
 
     void
     QuasiStaticSolver::Implementation::evaluate(const VectorType &u,
+                                                const double      t,
                                                 Residual         &r)
     {
       r.force.reinit(partitioner);
       elements::ElementStepResult result;
       elements.compute_residual(u, r.force, result);
+      // The loads' resisting forces (minus the loads) apart, for their norm.
+      VectorType load_resistance(partitioner), external(partitioner);
+      const model::EvaluationPoint point{u, zero, zero, no_bodies, t};
+      model::ContributionResults   unused;
+      unused.reset(0, 0);
+      for (model::ForceContribution *load : loads)
+        load->add_forces(
+          point,
+          load->accumulation() ==
+              model::ForceContribution::Accumulation::internal_ghosted ?
+            load_resistance :
+            external,
+          unused);
       r.force.compress(VectorOperation::add);
+      load_resistance.compress(VectorOperation::add);
+      load_resistance -= external;
+      r.force += load_resistance;
 
       r.failed = Utilities::MPI::logical_or(result.failure.failed, comm);
       r.failure.clear();
@@ -249,14 +295,19 @@ namespace rubberdyn
               r.failure = m;
           return;
         }
-      double sums[2] = {0., 0.};
+      double sums[3] = {0., 0., 0.};
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
-        sums[constrained[i] ? 1 : 0] += std::pow(r.force.local_element(i), 2);
-      Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+        {
+          sums[constrained[i] ? 1 : 0] += std::pow(r.force.local_element(i), 2);
+          if (!constrained[i])
+            sums[2] += std::pow(load_resistance.local_element(i), 2);
+        }
+      Utilities::MPI::sum(ArrayView<const double>(sums, 3),
                           comm,
-                          ArrayView<double>(sums, 2));
+                          ArrayView<double>(sums, 3));
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
+      r.load_norm     = std::sqrt(sums[2]);
       if (!std::isfinite(r.free_norm) || !std::isfinite(r.reaction_norm))
         {
           r.failed  = true;
@@ -272,8 +323,22 @@ namespace rubberdyn
 
 
 
+    bool
+    QuasiStaticSolver::Implementation::symmetric() const
+    {
+      if (elements.has_history())
+        return false;
+      for (const model::ForceContribution *load : loads)
+        if (!load->symmetric_tangent())
+          return false;
+      return true;
+    }
+
+
+
     void
     QuasiStaticSolver::Implementation::assemble(const VectorType &u,
+                                                const double      t,
                                                 const Residual   &r,
                                                 const VectorType &increment,
                                                 const bool        predictor)
@@ -315,6 +380,33 @@ namespace rubberdyn
                                                       rhs,
                                                       predictor);
         });
+      // The loads' tangents (the pressures' load stiffness), block by block.
+      const model::EvaluationPoint         point{u, zero, zero, no_bodies, t};
+      FullMatrix<double>                   block_matrix;
+      Vector<double>                       block_rhs;
+      std::vector<types::global_dof_index> block_global;
+      for (const model::ForceContribution *load : loads)
+        load->add_tangents(
+          point,
+          [&](const std::vector<unsigned int> &dofs,
+              const std::vector<double>       &K) {
+            const unsigned int n = dofs.size();
+            block_matrix.reinit(n, n);
+            block_rhs.reinit(n);
+            block_global.resize(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                block_global[i] = partitioner->local_to_global(dofs[i]);
+                for (unsigned int j = 0; j < n; ++j)
+                  block_matrix(i, j) = K[n * i + j];
+              }
+            step_constraints.distribute_local_to_global(block_matrix,
+                                                        block_rhs,
+                                                        block_global,
+                                                        matrix,
+                                                        rhs,
+                                                        predictor);
+          });
       // -r on the free owned dofs (the residual is already summed). The
       // constrained rows keep what distribute_local_to_global() put there
       // (their solution is overwritten in solve(), and their columns are
@@ -381,7 +473,7 @@ namespace rubberdyn
             solver.solve(matrix, solution, rhs, *amg);
             return control.last_step();
           };
-          if (elements.has_history())
+          if (!symmetric())
             n_iter = gmres();
           else
             try
@@ -423,12 +515,14 @@ namespace rubberdyn
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
       elements::ImplicitElements                               &elements,
       const KinematicConstraints                               &constraints,
+      const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm)
       : impl(std::make_unique<Implementation>(dof_handler,
                                               partitioner,
                                               elements,
                                               constraints,
+                                              loads,
                                               settings,
                                               comm))
     {
@@ -446,7 +540,7 @@ namespace rubberdyn
     {
       return impl->use_direct ?
                "direct (Amesos KLU)" :
-               std::string(impl->elements.has_history() ? "GMRES" : "CG") +
+               std::string(impl->symmetric() ? "CG" : "GMRES") +
                  " with ML AMG (6 rigid-body modes)";
     }
 
@@ -457,7 +551,7 @@ namespace rubberdyn
     {
       u.update_ghost_values();
       Implementation::Residual r;
-      impl->evaluate(u, r);
+      impl->evaluate(u, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +
@@ -540,7 +634,7 @@ namespace rubberdyn
           increment.update_ghost_values();
           u_start = u;
           u.update_ghost_values();
-          I.evaluate(u, r);
+          I.evaluate(u, t_new, r);
           std::string  reason;
           bool         converged    = false;
           double       first_energy = 0.;
@@ -552,7 +646,7 @@ namespace rubberdyn
               unsigned int n_linear  = 0;
               try
                 {
-                  I.assemble(u, r, increment, predictor);
+                  I.assemble(u, t_new, r, increment, predictor);
                   n_linear = I.solve(du, increment, predictor);
                 }
               catch (const std::exception &e)
@@ -586,7 +680,7 @@ namespace rubberdyn
                       u.local_element(i) +
                       (I.constrained[i] ? 1. : alpha) * du.local_element(i);
                   u_trial.update_ghost_values();
-                  I.evaluate(u_trial, r_trial);
+                  I.evaluate(u_trial, t_new, r_trial);
                   if (!r_trial.failed &&
                       (predictor || !s.line_search || trial == 6 ||
                        r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
@@ -606,7 +700,8 @@ namespace rubberdyn
               u.swap(u_trial);
               std::swap(r, r_trial);
 
-              const double scale = std::max(r.reaction_norm, s.residual_floor);
+              const double scale =
+                std::max({r.reaction_norm, r.load_norm, s.residual_floor});
               const double ratio = r.free_norm / scale;
               // (Collective: on every rank, not inside the log's if.)
               const double update = du.linfty_norm();
@@ -681,6 +776,8 @@ namespace rubberdyn
           // history becomes the start of the next step.
           initialize();
           I.elements.accept_history();
+          for (model::ForceContribution *load : I.loads)
+            load->accept_step();
           on_step();
           if (iteration <= 4)
             step = std::min(1.5 * step, s.maximum_step);

@@ -24,6 +24,8 @@
 //    resultant c Lz Lx^2 / 2, first moment sum_a X_a f_a,z = c Lz Lx^3 / 3
 //    (exact: the 2-point rule integrates x^2), and the moment about the
 //    origin from resultants(): M_y = -c Lz Lx^3 / 3, M_x = M_z = 0.
+// 6. The pressures' load stiffness for the implicit solver against central
+//    differences of the forces (see the case).
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -420,6 +422,120 @@ main(int argc, char **argv)
                << std::endl;
     check(e_f < 1e-12 && e_m < 1e-12,
           "linear traction " + sci(e_f) + " " + sci(e_m));
+  }
+
+  // 6. The implicit solver's tangent (SurfaceLoads::add_tangents()): on the
+  //    randomly deformed block, a pressure varying with position on all six
+  //    faces and a traction on x = 3. For a random direction w, K w against
+  //    the central difference (f(u + e w) - f(u - e w)) / (2 e), e = 1e-5
+  //    mm, of the same rank's (uncompressed) forces: the pressure's forces
+  //    are quadratic in the nodal positions on each face, so the central
+  //    difference is exact but for round-off (~1e-16 / e relative): within
+  //    1e-8 of |K w|. The traction adds no tangent (a dead load), and its
+  //    forces do not change with u: their difference vanishes.
+  {
+    block.deform([](const Point<3> &X) {
+      std::seed_seq                          seed{int(std::lround(10. * X[0])),
+                         int(std::lround(10. * X[1])),
+                         int(std::lround(10. * X[2])) + 7};
+      std::mt19937                           generator(seed);
+      std::uniform_real_distribution<double> shift(-0.2, 0.2);
+      Tensor<1, 3>                           x = X;
+      for (unsigned int d = 0; d < 3; ++d)
+        x[d] += shift(generator);
+      return x;
+    });
+    std::vector<model::BoundaryCondition> conditions;
+    for (unsigned int b = 0; b < 6; ++b)
+      conditions.push_back(make_condition("p",
+                                          b,
+                                          Type::pressure,
+                                          {0, 1, 2},
+                                          {[](const Point<3> &X, double) {
+                                            return 0.01 * (1. + X[0] * X[1]);
+                                          }},
+                                          true));
+    conditions.push_back(
+      make_condition("t",
+                     1,
+                     Type::traction,
+                     {0, 1, 2},
+                     {[](const Point<3> &, double) { return 0.01; },
+                      [](const Point<3> &, double) { return -0.02; },
+                      [](const Point<3> &, double) { return 0.03; }},
+                     false));
+    model::SurfaceLoads loads(block.dof_handler, block.partitioner, conditions);
+    const std::vector<model::RigidBody> bodies;
+
+    // A random direction at every local (owned and ghost) entry, the same
+    // value for a dof on every rank (seeded by its global index).
+    VectorType w(block.partitioner);
+    for (unsigned int i = 0;
+         i < w.locally_owned_size() + block.partitioner->n_ghost_indices();
+         ++i)
+      {
+        std::mt19937 generator(block.partitioner->local_to_global(i));
+        w.local_element(i) =
+          std::uniform_real_distribution<double>(-1., 1.)(generator);
+      }
+    const auto forces = [&](const VectorType &u) {
+      const model::EvaluationPoint point{u, block.v, block.mass, bodies, 0.};
+      VectorType                   f(block.partitioner);
+      model::ContributionResults   results;
+      results.reset(1, 0);
+      loads.add_forces(point, f, results);
+      return f;
+    };
+    const double e = 1e-5;
+    VectorType   plus(block.u), minus(block.u);
+    plus.add(e, w);
+    minus.add(-e, w);
+    // (add() changes the owned entries: the faces see the ghosts too.)
+    plus.update_ghost_values();
+    minus.update_ghost_values();
+    const VectorType f_plus = forces(plus), f_minus = forces(minus);
+
+    VectorType                   Kw(block.partitioner);
+    const model::EvaluationPoint point{block.u,
+                                       block.v,
+                                       block.mass,
+                                       bodies,
+                                       0.};
+    unsigned int                 n_blocks = 0;
+    loads.add_tangents(point,
+                       [&](const std::vector<unsigned int> &dofs,
+                           const std::vector<double>       &K) {
+                         ++n_blocks;
+                         const unsigned int n = dofs.size();
+                         for (unsigned int i = 0; i < n; ++i)
+                           for (unsigned int j = 0; j < n; ++j)
+                             Kw.local_element(dofs[i]) +=
+                               K[n * i + j] * w.local_element(dofs[j]);
+                       });
+    double local[2] = {0., 0.};
+    for (unsigned int i = 0;
+         i < w.locally_owned_size() + block.partitioner->n_ghost_indices();
+         ++i)
+      {
+        const double difference =
+          (f_plus.local_element(i) - f_minus.local_element(i)) / (2. * e);
+        local[0] += std::pow(Kw.local_element(i) - difference, 2);
+        local[1] += std::pow(Kw.local_element(i), 2);
+      }
+    Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                        block.partitioner->get_mpi_communicator(),
+                        ArrayView<double>(local, 2));
+    const double error = std::sqrt(local[0] / local[1]);
+    n_blocks =
+      Utilities::MPI::sum(n_blocks, block.partitioner->get_mpi_communicator());
+    text() << "load stiffness: " << n_blocks
+           << " face blocks (the pressed faces); |K w - central difference| "
+              "/ |K w| below 1e-8: "
+           << (error < 1e-8 ? "yes" : "no") << "; symmetric tangent: "
+           << (loads.symmetric_tangent() ? "yes" : "no") << std::endl;
+    measured() << "load stiffness: " << sci(error) << std::endl;
+    check(error < 1e-8 && !loads.symmetric_tangent(),
+          "load stiffness " + sci(error));
   }
   return 0;
 }

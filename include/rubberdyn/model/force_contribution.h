@@ -7,6 +7,7 @@
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/model/rigid_body.h>
 
+#include <functional>
 #include <iosfwd>
 #include <limits>
 #include <string>
@@ -57,7 +58,8 @@ namespace rubberdyn
       double element_time_step = std::numeric_limits<double>::max();
       /** Smallest stable step of the penalty springs (ms). */
       double contact_time_step = std::numeric_limits<double>::max();
-      /** Force of the solid on each rigid body (kN), indexed like the bodies. */
+      /** Force of the solid on each rigid body (kN), indexed like the bodies.
+       */
       std::vector<Tensor<1, 3>> force_on_body;
       /**
        * Moment of those forces about each body's current reference point
@@ -79,12 +81,12 @@ namespace rubberdyn
      */
     struct EvaluationPoint
     {
-      const VectorType &             displacement;
-      const VectorType &             velocity;
+      const VectorType &displacement;
+      const VectorType &velocity;
       /** Lumped nodal masses (kg, with mass scaling; ghosted). */
-      const VectorType &             mass;
-      const std::vector<RigidBody> & bodies;
-      double                         time;
+      const VectorType             &mass;
+      const std::vector<RigidBody> &bodies;
+      double                        time;
     };
 
     /**
@@ -129,10 +131,11 @@ namespace rubberdyn
        */
       virtual void
       add_forces(const EvaluationPoint &point,
-                 VectorType &           f,
-                 ContributionResults &  results) = 0;
+                 VectorType            &f,
+                 ContributionResults   &results) = 0;
 
-      /** The step was taken: make the history of the last evaluation current. */
+      /** The step was taken: make the history of the last evaluation current.
+       */
       virtual void
       accept_step()
       {}
@@ -146,6 +149,53 @@ namespace rubberdyn
       {
         (void)mass;
         (void)physical_mass;
+      }
+
+      /**
+       * Receives one block of a tangent (add_tangents()): the local vector
+       * indices (owned or ghost, of the solver's partitioner) of its n dofs
+       * and the n x n derivative of the resisting force with respect to
+       * their displacements, row-major (kN/mm).
+       */
+      using TangentBlock =
+        std::function<void(const std::vector<unsigned int> &dofs,
+                           const std::vector<double>       &K)>;
+
+      /**
+       * Whether the implicit (quasi-static) solver can use this
+       * contribution: its forces at @p point are those of a static state
+       * (no velocity or mass enters) and add_tangents() gives their exact
+       * derivative. The default is no: a contribution that has not been
+       * made implicit is refused by name rather than solved with a wrong
+       * tangent.
+       */
+      virtual bool
+      supports_implicit() const
+      {
+        return false;
+      }
+
+      /** Whether the blocks of add_tangents() make a symmetric matrix. */
+      virtual bool
+      symmetric_tangent() const
+      {
+        return true;
+      }
+
+      /**
+       * For the implicit solver: add the derivative of the forces that
+       * add_forces() writes at @p point (resisting forces for
+       * Accumulation::internal_ghosted: minus the load for a load) with
+       * respect to the nodal displacements, block by block. Blocks are
+       * written from this rank's share of the contribution (its own faces or
+       * cells), like its forces. The default adds nothing: right for
+       * forces that do not depend on the displacement (dead loads).
+       */
+      virtual void
+      add_tangents(const EvaluationPoint &point, const TangentBlock &add) const
+      {
+        (void)point;
+        (void)add;
       }
 
       /** Write the contribution's state (history) for a checkpoint. */

@@ -15,6 +15,10 @@ namespace rubberdyn
   {
     class ImplicitElements;
   }
+  namespace postprocess
+  {
+    class HistoryNodes;
+  }
   namespace time_integration
   {
     class KinematicConstraints;
@@ -24,6 +28,7 @@ namespace rubberdyn
   namespace model
   {
     class Model;
+    class SurfaceLoads;
 
     /**
      * The quasi-static engine path (`Time integration/Scheme =
@@ -35,8 +40,13 @@ namespace rubberdyn
      * (model::setup), and writes time_history.csv: time, newton_iterations,
      * internal_energy, per part `<part>_internal_energy` and per boundary
      * condition its reaction `<bc>_force_x/_y/_z` (kN) and
-     * `<bc>_moment_x/_y/_z` (kN mm), the columns and sign conventions of
-     * the explicit run (the force the condition exerts on the body).
+     * `<bc>_moment_x/_y/_z` (kN mm), the `Output/History nodes`'
+     * displacements, the columns and sign conventions of
+     * the explicit run (the force the condition exerts on the body; for a
+     * pressure or traction, the load's resultant). Pressures and tractions
+     * are the same model::SurfaceLoads contribution as in the explicit run,
+     * evaluated at each load step's end time with the pressures' load
+     * stiffness in the tangent.
      *
      * What the scheme cannot run yet is refused before anything is written
      * (check_supported()).
@@ -60,8 +70,8 @@ namespace rubberdyn
       /**
        * Refuse, with an InputError naming `Time integration/Scheme` and the
        * offending entry, a model or settings the quasi-static scheme
-       * cannot run yet: rigid surfaces, rigid parts, velocity, pressure and
-       * traction conditions, initial velocities, gravity, mass scaling,
+       * cannot run yet: rigid surfaces, rigid parts, velocity conditions,
+       * initial velocities, gravity, mass scaling,
        * checkpoints and restarts.
        */
       static void
@@ -99,9 +109,13 @@ namespace rubberdyn
       std::string                                             title;
       std::unique_ptr<elements::ImplicitElements>             elements;
       std::unique_ptr<time_integration::KinematicConstraints> constraints;
+      std::unique_ptr<SurfaceLoads>                           surface_loads;
+      std::unique_ptr<postprocess::HistoryNodes>              history_nodes;
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
       /** Boundary condition and direction of each constraint group. */
       std::vector<unsigned int> condition_of_group, direction_of_group;
+      /** Boundary condition of each of the surface loads. */
+      std::vector<unsigned int> condition_of_load;
     };
   } // namespace model
 } // namespace rubberdyn

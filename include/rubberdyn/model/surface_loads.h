@@ -144,6 +144,33 @@ namespace rubberdyn
                  VectorType            &f,
                  ContributionResults   &results) override;
 
+      /** Yes: the loads are static, and their tangent is add_tangents(). */
+      bool
+      supports_implicit() const override;
+
+      /** Whether no pressure is among the loads (tractions add no tangent). */
+      bool
+      symmetric_tangent() const override;
+
+      /**
+       * The load stiffness of the pressures (a traction is a dead load and
+       * adds nothing): per face, with $\mathbf a_q = \mathbf x_{,\xi} \times
+       * \mathbf x_{,\eta}$ and the resisting force $\mathbf r_a = \sum_q
+       * p\, N_a w_q\, \mathbf a_q$,
+       * @f[
+       *   \frac{\partial \mathbf r_a}{\partial \mathbf x_b} = \sum_q p\, N_a
+       *   w_q \bigl( N_{b,\eta} [\mathbf x_{,\xi}]_\times - N_{b,\xi}
+       *   [\mathbf x_{,\eta}]_\times \bigr),
+       * @f]
+       * $[\mathbf v]_\times \mathbf w = \mathbf v \times \mathbf w$: one
+       * 12 x 12 block per face, not symmetric on its own (it is symmetric
+       * summed over a closed surface under a uniform pressure: Bonet & Wood
+       * (2008), section 8.4).
+       */
+      void
+      add_tangents(const EvaluationPoint &point,
+                   const TangentBlock    &add) const override;
+
       /** Keep the last evaluation's forces and displacements for the work. */
       void
       accept_step() override;

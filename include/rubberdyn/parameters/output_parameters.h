@@ -3,7 +3,9 @@
 
 #include <rubberdyn/postprocess/field_output.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -36,12 +38,33 @@ namespace rubberdyn
       /** Continue from the checkpoint in the output directory. */
       bool restart = false;
 
+      /** A named mesh node whose displacement is a history column. */
+      struct HistoryNode
+      {
+        /** Column prefix: `<name>_displacement_x/_y/_z`. */
+        std::string name;
+        /** Its position in the reference configuration (mm). */
+        std::array<double, 3> point;
+      };
+      /** `History nodes`, in the order given. */
+      std::vector<HistoryNode> history_nodes;
+
       /**
        * Declare the entries in subsection `Output`. (`Output directory`
        * is declared here too: every study writes somewhere.)
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * The entries of `History nodes` ('name: x, y, z; ...').
+       *
+       * @throws InputError naming `Output/History nodes` for an entry that
+       *   is not of that form, a name that is not letters, digits and '_' or
+       *   is given twice, or a coordinate that is not a finite number.
+       */
+      static std::vector<HistoryNode>
+      parse_history_nodes(const std::string &text);
 
       /** Read them back (from the top level of @p prm). */
       void

@@ -27,6 +27,10 @@ namespace rubberdyn
   {
     class ImplicitElements;
   }
+  namespace model
+  {
+    class ForceContribution;
+  }
 
   namespace time_integration
   {
@@ -67,16 +71,17 @@ namespace rubberdyn
      * stepping in the pseudo-time t of the boundary-condition functions
      * (Wriggers, Nonlinear Finite Element Methods (2008), sections 5.1 and
      * 5.2; Belytschko, Liu, Moran, Nonlinear Finite Elements (2000), section
-     * 6.3). No inertia, no external loads other than the prescribed
-     * displacements (the Model study refuses the rest for now).
+     * 6.3). No inertia.
      *
-     * The elements come through elements::ImplicitElements: the residual
-     * and its exact tangent of elements::SolidHexElements (the internal
-     * force of the explicit engine at zero velocity, the very function the
-     * explicit solver integrates, so that a converged state is an explicit
-     * equilibrium) or of elements::MixedUPElements (Q2 with condensed
-     * pressure and dilatation on an FE_Q(2) dof handler); either way
-     * Newton converges quadratically.
+     * The residual is the internal force of the elements, taken through
+     * elements::ImplicitElements (elements::SolidHexElements: the explicit
+     * engine's force at zero velocity, the very function the explicit
+     * solver integrates; or elements::MixedUPElements: Q2 with condensed
+     * pressure and dilatation on an FE_Q(2) dof handler), minus the loads
+     * of the further force contributions (tractions and follower pressures
+     * at the step's end time t_{n+1}), and the tangent its exact derivative
+     * (the elements' compute_tangents() and each contribution's
+     * add_tangents()), so that Newton converges quadratically.
      *
      * Each load step from t_n to t_{n+1}: the first iteration solves
      * $K \delta u = -r$ with $\delta u$ prescribed on the constrained dofs
@@ -89,8 +94,9 @@ namespace rubberdyn
      * lines of the same object. A backtracking line search halves the
      * correction (at most 6 times) while an element inverts or the residual
      * norm grows. Converged when both
-     * $\|r_{free}\| \le \epsilon_r \max(\|r_{constrained}\|, \ldots)$ (the
-     * reactions; or below an absolute floor) and
+     * $\|r_{free}\| \le \epsilon_r \max(\|r_{constrained}\|,
+     * \|f_{ext,free}\|)$ (the reactions, or the loads on the free dofs; or
+     * below an absolute floor) and
      * $|\delta u_k \cdot r_k| \le \epsilon_E |\delta u_0 \cdot r_0|$ (the
      * energy norm). A step that inverts an element, diverges (the residual
      * grows in two iterations in a row from the third on) or uses up its
@@ -111,12 +117,17 @@ namespace rubberdyn
        * @param constraints The kinematic conditions: displacement groups
        *   follow their functions of t, velocity groups (fixed and symmetry
        *   conditions, whose velocity is zero) hold their dofs at zero.
+       * @param loads Further force contributions (the surface loads; later
+       *   contact), evaluated at the load step's end time with their
+       *   tangents (model::ForceContribution::add_tangents()); each must
+       *   support the implicit solver (an ExcMessage naming it otherwise).
        */
       QuasiStaticSolver(
         const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
         elements::ImplicitElements                               &elements,
         const KinematicConstraints                               &constraints,
+        const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm);
 

@@ -1,0 +1,160 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/postprocess/history_nodes.h>
+#include <rubberdyn/time_integration/explicit_solver.h>
+
+#include <limits>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    HistoryNodes::HistoryNodes(
+      const DoFHandler<3, 3>                                   &dof_handler,
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+      const std::vector<parameters::Output::HistoryNode>       &nodes)
+    {
+      const MPI_Comm comm = partitioner->get_mpi_communicator();
+      // The mesh's size, for the tolerance (every rank sees its own cells).
+      Point<3> low, high;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          low[d]  = std::numeric_limits<double>::max();
+          high[d] = -std::numeric_limits<double>::max();
+        }
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                low[d]  = std::min(low[d], cell->vertex(v)[d]);
+                high[d] = std::max(high[d], cell->vertex(v)[d]);
+              }
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          low[d]  = Utilities::MPI::min(low[d], comm);
+          high[d] = Utilities::MPI::max(high[d], comm);
+        }
+      const double tolerance = 1e-6 * low.distance(high);
+
+      const FiniteElement<3>              &fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const parameters::Output::HistoryNode &node : nodes)
+        {
+          const Point<3> point(node.point[0], node.point[1], node.point[2]);
+          // The nearest vertex of the owned cells, and its dofs.
+          double   nearest = std::numeric_limits<double>::max();
+          Point<3> where;
+          std::array<types::global_dof_index, 3> global{};
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const double distance = cell->vertex(v).distance(point);
+                  if (distance < nearest)
+                    {
+                      nearest = distance;
+                      where   = cell->vertex(v);
+                      cell->get_dof_indices(dofs);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        global[d] = dofs[fe.component_to_system_index(d, v)];
+                    }
+                }
+          const double closest = Utilities::MPI::min(nearest, comm);
+          if (closest > tolerance)
+            {
+              // Where the nearest vertex is (from the rank that has it).
+              std::ostringstream at;
+              if (nearest == closest)
+                at << where;
+              std::string location;
+              for (const std::string &s :
+                   Utilities::MPI::all_gather(comm, at.str()))
+                if (location.empty())
+                  location = s;
+              std::ostringstream message;
+              message << "no node of the mesh lies at the point of '"
+                      << node.name << "' (" << point << "); the nearest is "
+                      << closest << " mm away, at (" << location << ")";
+              throw InputError("Output/History nodes", message.str());
+            }
+          std::array<unsigned int, 3> local;
+          local.fill(numbers::invalid_unsigned_int);
+          if (nearest <= tolerance && partitioner->in_local_range(global[0]))
+            for (unsigned int d = 0; d < 3; ++d)
+              local[d] = partitioner->global_to_local(global[d]);
+          owned_dofs.push_back(local);
+          names.push_back(node.name);
+        }
+    }
+
+
+
+    std::vector<std::string>
+    HistoryNodes::columns() const
+    {
+      std::vector<std::string> result;
+      for (const std::string &name : names)
+        for (const char *d : {"_x", "_y", "_z"})
+          result.push_back(name + "_displacement" + d);
+      return result;
+    }
+
+
+
+    void
+    HistoryNodes::append_values(const VectorType    &u,
+                                std::vector<double> &values) const
+    {
+      std::vector<double> sums(3 * names.size(), 0.);
+      for (unsigned int n = 0; n < names.size(); ++n)
+        if (owned_dofs[n][0] != numbers::invalid_unsigned_int)
+          for (unsigned int d = 0; d < 3; ++d)
+            sums[3 * n + d] = u.local_element(owned_dofs[n][d]);
+      Utilities::MPI::sum(ArrayView<const double>(sums),
+                          u.get_mpi_communicator(),
+                          ArrayView<double>(sums));
+      values.insert(values.end(), sums.begin(), sums.end());
+    }
+
+
+
+    HistoryNodeColumns::HistoryNodeColumns(std::unique_ptr<HistoryNodes> nodes)
+      : nodes(std::move(nodes))
+    {}
+
+
+
+    std::string
+    HistoryNodeColumns::name() const
+    {
+      return "history nodes";
+    }
+
+
+
+    std::vector<std::string>
+    HistoryNodeColumns::history_columns() const
+    {
+      return nodes->columns();
+    }
+
+
+
+    void
+    HistoryNodeColumns::history_values(const SimulationView &view,
+                                       std::vector<double>  &values)
+    {
+      nodes->append_values(view.solver.displacement(), values);
+    }
+  } // namespace postprocess
+} // namespace rubberdyn
