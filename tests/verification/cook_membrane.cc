@@ -6,8 +6,9 @@
 // (SolidHexElements) and the mixed u-p element (MixedUPElements), on the
 // structured meshes cook_membrane_n, n x n x 1 cells.
 //
-// The load: the quasi-static Model study cannot apply tractions yet (issue
-// 9's surface loads for the quasi-static scheme come separately), so this
+// The load: the quasi-static Model study applies tractions through
+// model::SurfaceLoads, which integrates bilinear faces of Q1 nodes and is
+// refused with the mixed element's Q2 dofs, so this
 // driver builds the solver's pieces itself (mesh, dofs, elements,
 // KinematicConstraints) and wraps the elements in an ImplicitElements whose
 // residual is f_int(u) - lambda f_ext, f_ext the consistent nodal forces of
@@ -18,7 +19,9 @@
 // does not converge is halved by the driver, with the load of the shorter
 // step, since the solver's own cut-back would keep the end load): every
 // reported state is an exact equilibrium of f_int = lambda f_ext, the load
-// path of a traction of function t. Boundary conditions: the clamped edge
+// path of a traction of function t (the F-bar values equal those of the
+// Model study with its traction, tests/model/cook_membrane_quasi_static.sh,
+// to the 5 digits printed there). Boundary conditions: the clamped edge
 // (id 1) fixed, u_z = 0 on both faces z = 0 and z = 1 (ids 3 and 4; every
 // node lies on one).
 //
@@ -215,6 +218,7 @@ namespace
                                                partitioner,
                                                loaded,
                                                constraints,
+                                               {},
                                                settings,
                                                MPI_COMM_WORLD);
     solver.initialize();
