@@ -48,6 +48,10 @@ namespace rubberdyn
                   std::to_string(inserted.first->second) + " and " +
                   std::to_string(g));
             }
+          if (group.formulation == Formulation::mixed_up)
+            throw std::invalid_argument(
+              "SolidHexElements: element group " + std::to_string(g) +
+              " is of the mixed u-p formulation (MixedUPElements)");
           const bool fbar = (group.formulation == Formulation::fbar);
           groups.push_back(
             {group.law,

@@ -60,6 +60,20 @@ namespace rubberdyn
 
 
 
+    void
+    SolidHexElements::compute_residual(const VectorType  &u,
+                                       VectorType        &f,
+                                       ElementStepResult &result)
+    {
+      // Zero velocity (no bulk viscosity) and no mass scaling.
+      VectorType zero_velocity;
+      zero_velocity.reinit(u, false);
+      const std::vector<double> no_scaling(n_elements(), 1.);
+      compute_forces(u, zero_velocity, no_scaling, f, result);
+    }
+
+
+
     bool
     SolidHexElements::has_history() const
     {

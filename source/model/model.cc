@@ -16,6 +16,7 @@ namespace rubberdyn
       : comm(comm)
       , triangulation(comm)
       , fe(FE_Q<3>(1), 3)
+      , fe_quadratic(FE_Q<3>(2), 3)
       , dof_handler(triangulation)
     {}
 
@@ -91,7 +92,26 @@ namespace rubberdyn
                            std::to_string(*all.begin()) +
                            " (a physical volume tag) that is in no part; "
                            "list it in the 'Material ids' of one part");
-      dof_handler.distribute_dofs(fe);
+      // The mixed u-p element for all deformable parts or for none: it
+      // needs Q2 dofs, which the Q1 elements cannot share.
+      const Part *mixed = nullptr, *other = nullptr;
+      for (const Part &part : parts)
+        {
+          if (part.rigid)
+            continue;
+          const Part *&first =
+            part.formulation == elements::Formulation::mixed_up ? mixed : other;
+          if (first == nullptr)
+            first = &part;
+        }
+      if (mixed != nullptr && other != nullptr)
+        throw InputError("Parts/" + other->name + "/Element formulation",
+                         "the part '" + mixed->name +
+                           "' uses 'mixed u-p' and this part does not; a "
+                           "model uses the mixed u-p element for all its "
+                           "deformable parts or for none");
+      mixed_up = (mixed != nullptr);
+      dof_handler.distribute_dofs(mixed_up ? fe_quadratic : fe);
       partitioner = ghosted_partitioner(dof_handler);
     }
   } // namespace model

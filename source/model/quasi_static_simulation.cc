@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/elements/mixed_up_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
@@ -39,6 +40,13 @@ namespace rubberdyn
                "Rigid surfaces/Names");
       for (const Part &part : model.parts)
         {
+          if (part.formulation == elements::Formulation::mixed_up &&
+              part.law->n_state_variables() > 0)
+            throw InputError("Parts/" + part.name + "/Element formulation",
+                             "'mixed u-p' takes hyperelastic laws only; the "
+                             "law of part '" +
+                               part.name + "' (" + part.law->name() +
+                               ") keeps a history; use 'F-bar'");
           if (part.rigid)
             refuse("the rigid part '" + part.name + "'",
                    "Parts/" + part.name + "/Model");
@@ -53,6 +61,16 @@ namespace rubberdyn
           if (bc.type == BoundaryCondition::Type::velocity)
             refuse("the velocity condition '" + bc.name + "'",
                    "Boundary conditions/" + bc.name + "/Type");
+          // SurfaceLoads integrates bilinear faces of Q1 nodes; the mixed
+          // u-p element's Q2 face nodes would get an inconsistent load.
+          const bool load = bc.type == BoundaryCondition::Type::traction ||
+                            bc.type == BoundaryCondition::Type::pressure;
+          for (const Part &part : model.parts)
+            if (load && part.formulation == elements::Formulation::mixed_up)
+              throw InputError("Boundary conditions/" + bc.name + "/Type",
+                               "the mixed u-p element (part '" + part.name +
+                                 "') does not take tractions and pressures "
+                                 "yet; use 'F-bar' for this model");
         }
       if (model.gravity.norm() != 0.)
         refuse("gravity", "Model/Gravity");
@@ -77,11 +95,25 @@ namespace rubberdyn
       , title(title)
     {
       check_supported(model, time_integration, output);
-      elements = std::make_unique<elements::SolidHexElements>();
-      elements->initialize(model.dof_handler,
-                           model.partitioner,
-                           setup::element_groups(model),
-                           setup::element_settings(time_integration));
+      // The mixed u-p element on the model's Q2 dofs, or the explicit
+      // engine's hexahedra (F-bar, displacement) on its Q1 dofs.
+      if (model.uses_mixed_up())
+        {
+          auto mixed = std::make_unique<elements::MixedUPElements>();
+          mixed->initialize(model.dof_handler,
+                            model.partitioner,
+                            setup::element_groups(model));
+          elements = std::move(mixed);
+        }
+      else
+        {
+          auto hexes = std::make_unique<elements::SolidHexElements>();
+          hexes->initialize(model.dof_handler,
+                            model.partitioner,
+                            setup::element_groups(model),
+                            setup::element_settings(time_integration));
+          elements = std::move(hexes);
+        }
       constraints = std::make_unique<time_integration::KinematicConstraints>(
         model.dof_handler,
         model.partitioner);

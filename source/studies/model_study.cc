@@ -290,10 +290,16 @@ namespace rubberdyn
                             "The material ids (Gmsh physical volume tags) of "
                             "this part's cells, separated by commas.");
           prm.declare_entry("Element formulation", "F-bar",
-                            Patterns::Selection("F-bar|displacement"),
+                            Patterns::Selection("F-bar|displacement|mixed u-p"),
                             "'F-bar': volumetric part of F at the element "
                             "centre (no volumetric locking; for rubber); "
-                            "'displacement': plain trilinear hexahedron.");
+                            "'displacement': plain trilinear hexahedron; "
+                            "'mixed u-p': triquadratic hexahedron with a "
+                            "linear pressure and dilatation per cell, "
+                            "condensed (Q2-P1-P1, for accuracy studies; "
+                            "Time integration/Scheme = quasi-static only, "
+                            "hyperelastic laws only, and then for every "
+                            "deformable part; see doc/quasi_static.md).");
           prm.declare_entry("Initial velocity", "0, 0, 0",
                             Patterns::Anything(),
                             "Velocity of the part's nodes at t = 0 (mm/ms), "
@@ -532,9 +538,19 @@ namespace rubberdyn
                                "the mesh " + mesh_file +
                                  " has no cell with material id " +
                                  std::to_string(id));
-          part.formulation = prm.get("Element formulation") == "F-bar" ?
-                               elements::Formulation::fbar :
-                               elements::Formulation::displacement;
+          const std::string formulation = prm.get("Element formulation");
+          part.formulation =
+            formulation == "F-bar"        ? elements::Formulation::fbar :
+            formulation == "displacement" ? elements::Formulation::displacement :
+                                            elements::Formulation::mixed_up;
+          if (part.formulation == elements::Formulation::mixed_up &&
+              time_integration.scheme != "quasi-static")
+            throw InputError(path + "/Element formulation",
+                             "'mixed u-p' (part '" + name +
+                               "') runs with Time integration/Scheme = "
+                               "quasi-static only, not with '" +
+                               time_integration.scheme +
+                               "'; use 'F-bar' for the explicit engine");
           part.initial_velocity =
             parse_vector(prm.get("Initial velocity"), path + "/Initial velocity");
           const std::string rigid_motion =

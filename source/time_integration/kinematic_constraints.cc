@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping_q1.h>
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
@@ -49,6 +50,15 @@ namespace rubberdyn
       const FiniteElement<3> &fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       std::map<unsigned int, Entry>        entries;
+      // Q1: the nodes are the vertices. Q2 (the mixed u-p element): the
+      // support points of the face's nodes.
+      const bool quadratic = fe.degree == 2;
+      AssertThrow(fe.degree == 1 || fe.degree == 2,
+                  ExcMessage("KinematicConstraints needs FE_Q(1) or FE_Q(2)"));
+      const std::vector<Point<3>> unit_points =
+        quadratic ? fe.base_element(0).get_unit_support_points() :
+                    std::vector<Point<3>>();
+      const MappingQ1<3> mapping;
       // Ghost cells too: an owned node may lie on a boundary face of a
       // neighbour's cell only.
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -64,6 +74,8 @@ namespace rubberdyn
                       GeometryInfo<3>::face_to_cell_vertices(face, v);
                     if (vertices != nullptr)
                       vertices->push_back(cell->vertex(vertex));
+                    if (quadratic)
+                      continue;
                     const types::global_dof_index dof =
                       dof_indices[fe.component_to_system_index(direction,
                                                                vertex)];
@@ -78,6 +90,33 @@ namespace rubberdyn
                         dof_indices[fe.component_to_system_index(d, vertex)]);
                     entries[entry.dof] = entry;
                   }
+                // FE_Q(2): every node of the face (vertices, edge midpoints,
+                // face centre), at its support point: the nodes where a
+                // Lagrange shape function of the face is one. On the
+                // trilinear cells of rubberdyn's meshes MappingQ1 gives
+                // their exact reference positions.
+                if (quadratic)
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    {
+                      const auto ci = fe.system_to_component_index(i);
+                      if (ci.first != direction ||
+                          !fe.has_support_on_face(i, face))
+                        continue;
+                      const types::global_dof_index dof = dof_indices[i];
+                      if (!partitioner->in_local_range(dof))
+                        continue;
+                      Entry entry;
+                      entry.dof   = partitioner->global_to_local(dof);
+                      entry.group = group;
+                      entry.X     = mapping.transform_unit_to_real_cell(
+                        cell,
+                        unit_points[ci.second]);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        entry.node_dofs[d] = partitioner->global_to_local(
+                          dof_indices[fe.component_to_system_index(d,
+                                                                   ci.second)]);
+                      entries[entry.dof] = entry;
+                    }
               }
       std::vector<Entry> result;
       for (const auto &[dof, entry] : entries)

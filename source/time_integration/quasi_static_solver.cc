@@ -15,6 +15,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <rubberdyn/elements/implicit_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -56,7 +57,7 @@ namespace rubberdyn
       Implementation(
         const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-        elements::SolidHexElements                               &elements,
+        elements::ImplicitElements                               &elements,
         const KinematicConstraints                               &constraints,
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
@@ -118,7 +119,7 @@ namespace rubberdyn
 
       const DoFHandler<3, 3>                            &dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      elements::SolidHexElements                        &elements;
+      elements::ImplicitElements                        &elements;
       const KinematicConstraints                        &constraints;
       /** The loads (and later contact): forces and tangents beside the
        * elements'. */
@@ -147,7 +148,7 @@ namespace rubberdyn
     QuasiStaticSolver::Implementation::Implementation(
       const DoFHandler<3, 3>                                   &dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      elements::SolidHexElements                               &elements,
+      elements::ImplicitElements                               &elements,
       const KinematicConstraints                               &constraints,
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
@@ -221,12 +222,13 @@ namespace rubberdyn
           rigid_body_modes.assign(6 * n_owned, 0.);
           // Component of each owned dof.
           std::vector<unsigned int>            component(n_owned, 0);
-          std::vector<types::global_dof_index> dofs(24);
+          std::vector<types::global_dof_index> dofs(
+            dof_handler.get_fe().n_dofs_per_cell());
           for (const auto &cell : dof_handler.active_cell_iterators())
             if (cell->is_locally_owned())
               {
                 cell->get_dof_indices(dofs);
-                for (unsigned int i = 0; i < 24; ++i)
+                for (unsigned int i = 0; i < dofs.size(); ++i)
                   if (partitioner->in_local_range(dofs[i]))
                     component[partitioner->global_to_local(dofs[i])] =
                       dof_handler.get_fe().system_to_component_index(i).first;
@@ -260,9 +262,8 @@ namespace rubberdyn
                                                 Residual         &r)
     {
       r.force.reinit(partitioner);
-      const std::vector<double>   no_scaling(elements.n_elements(), 1.);
       elements::ElementStepResult result;
-      elements.compute_forces(u, zero, no_scaling, r.force, result);
+      elements.compute_residual(u, r.force, result);
       // The loads' resisting forces (minus the loads) apart, for their norm.
       VectorType load_resistance(partitioner), external(partitioner);
       const model::EvaluationPoint point{u, zero, zero, no_bodies, t};
@@ -359,16 +360,17 @@ namespace rubberdyn
           }
       step_constraints.close();
 
-      FullMatrix<double>                   cell_matrix(24, 24);
-      Vector<double>                       cell_rhs(24);
-      std::vector<types::global_dof_index> global(24);
+      const unsigned int                   n = elements.n_dofs_per_element();
+      FullMatrix<double>                   cell_matrix(n, n);
+      Vector<double>                       cell_rhs(n);
+      std::vector<types::global_dof_index> global(n);
       elements
         .compute_tangents(u, [&](const unsigned int *dofs, const double *K) {
-          for (unsigned int i = 0; i < 24; ++i)
+          for (unsigned int i = 0; i < n; ++i)
             {
               global[i] = partitioner->local_to_global(dofs[i]);
-              for (unsigned int j = 0; j < 24; ++j)
-                cell_matrix(i, j) = K[24 * i + j];
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) = K[n * i + j];
             }
           cell_rhs = 0.;
           step_constraints.distribute_local_to_global(cell_matrix,
@@ -511,7 +513,7 @@ namespace rubberdyn
     QuasiStaticSolver::QuasiStaticSolver(
       const DoFHandler<3, 3>                                   &dof_handler,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-      elements::SolidHexElements                               &elements,
+      elements::ImplicitElements                               &elements,
       const KinematicConstraints                               &constraints,
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,

@@ -4,6 +4,7 @@
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
 #include <rubberdyn/base/vector.h>
+#include <rubberdyn/elements/implicit_elements.h>
 
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/materials/stress_kernel.h>
@@ -182,7 +183,13 @@ namespace rubberdyn
       /** Plain displacement element, 2x2x2 Gauss points (locks). */
       displacement,
       /** F-bar: volumetric part of F taken at the element centre. */
-      fbar
+      fbar,
+      /**
+       * Mixed u-p: triquadratic displacement with a condensed P1 pressure
+       * and dilatation per cell (MixedUPElements; quasi-static only, on an
+       * FE_Q(2) dof handler). SolidHexElements refuses it.
+       */
+      mixed_up
     };
 
     /**
@@ -267,7 +274,7 @@ namespace rubberdyn
      * its group's formulation. Cells of material ids in no group get no
      * element (rigid parts).
      */
-    class SolidHexElements
+    class SolidHexElements : public ImplicitElements
     {
     public:
       /**
@@ -287,7 +294,24 @@ namespace rubberdyn
 
       /** Number of element groups, as given to initialize(). */
       unsigned int
-      n_groups() const;
+      n_groups() const override;
+
+      /** 24: eight nodes, three components. */
+      unsigned int
+      n_dofs_per_element() const override
+      {
+        return 3 * internal::n_nodes;
+      }
+
+      /**
+       * The quasi-static residual: compute_forces() at zero velocity and
+       * without mass scaling (no bulk viscosity), the explicit engine's
+       * internal force.
+       */
+      void
+      compute_residual(const VectorType  &u,
+                       VectorType        &f,
+                       ElementStepResult &result) override;
 
       /**
        * Number of locally owned elements. Elements are numbered group by
@@ -366,18 +390,18 @@ namespace rubberdyn
       compute_tangents(
         const VectorType &u,
         const std::function<void(const unsigned int *dofs, const double *K)>
-          &add) const;
+          &add) const override;
 
       /**
        * Whether a law of some group keeps a history (inelastic: its
        * tangent is not symmetric).
        */
       bool
-      has_history() const;
+      has_history() const override;
 
       /** Accept the history computed by the last compute_forces(). */
       void
-      accept_history();
+      accept_history() override;
 
       /** Cell averages of the Gauss-point values, for output. */
       struct CellAverages

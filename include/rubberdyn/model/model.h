@@ -146,11 +146,25 @@ namespace rubberdyn
       /**
        * After the mesh, parts, conditions and surfaces are set: distribute
        * the dofs and check that every cell belongs to exactly one part.
+       * The dofs are those of `fe` (Q1), or of `fe_quadratic` (Q2) when the
+       * deformable parts use the mixed u-p element (uses_mixed_up()).
        *
-       * @throws InputError naming the part or material id otherwise.
+       * @throws InputError naming the part or material id otherwise, or
+       *   naming two deformable parts of which one uses the mixed u-p
+       *   element and the other not.
        */
       void
       setup();
+
+      /**
+       * Whether the deformable parts use the mixed u-p element (then all
+       * of them do, and the dofs are Q2). Valid after setup().
+       */
+      bool
+      uses_mixed_up() const
+      {
+        return mixed_up;
+      }
 
       /** Index of the part named @p name. @throws if there is none. */
       unsigned int
@@ -166,13 +180,22 @@ namespace rubberdyn
 
       MPI_Comm                                  comm;
       parallel::distributed::Triangulation<3>   triangulation;
+      /** FE_Q(1)^3: the dofs of the explicit and F-bar/displacement runs. */
       FESystem<3>                               fe;
+      /** FE_Q(2)^3: the dofs of the mixed u-p element (quasi-static). */
+      FESystem<3>                               fe_quadratic;
       DoFHandler<3>                             dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
       std::vector<Part>                   parts;
       std::vector<BoundaryCondition>      boundary_conditions;
       std::vector<RigidSurfaceDefinition> rigid_surfaces;
+
+    private:
+      /** Set by setup(): the dofs are fe_quadratic's. */
+      bool mixed_up = false;
+
+    public:
       /** Gravitational acceleration (mm/ms^2). */
       Tensor<1, 3> gravity;
     };

@@ -13,7 +13,7 @@ namespace rubberdyn
 {
   namespace elements
   {
-    class SolidHexElements;
+    class ImplicitElements;
   }
   namespace postprocess
   {
@@ -107,7 +107,7 @@ namespace rubberdyn
       parameters::TimeIntegration                             time_integration;
       parameters::Output                                      output;
       std::string                                             title;
-      std::unique_ptr<elements::SolidHexElements>             elements;
+      std::unique_ptr<elements::ImplicitElements>             elements;
       std::unique_ptr<time_integration::KinematicConstraints> constraints;
       std::unique_ptr<SurfaceLoads>                           surface_loads;
       std::unique_ptr<postprocess::HistoryNodes>              history_nodes;

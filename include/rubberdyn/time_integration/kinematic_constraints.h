@@ -59,7 +59,10 @@ namespace rubberdyn
       using Function = std::function<double(const Point<3> &X, double t)>;
 
       /**
-       * @param dof_handler Distributed FESystem(FE_Q(1), 3) handler.
+       * @param dof_handler Distributed FESystem(FE_Q(1), 3) handler, or
+       *   FESystem(FE_Q(2), 3) (the mixed u-p element): then every node of
+       *   a face (vertices, edge midpoints, face centre) is constrained, at
+       *   its support point.
        * @param partitioner Its vector partitioner (owned + ghost dofs).
        */
       KinematicConstraints(

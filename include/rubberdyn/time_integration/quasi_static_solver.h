@@ -25,7 +25,7 @@ namespace rubberdyn
 {
   namespace elements
   {
-    class SolidHexElements;
+    class ImplicitElements;
   }
   namespace model
   {
@@ -73,13 +73,15 @@ namespace rubberdyn
      * 5.2; Belytschko, Liu, Moran, Nonlinear Finite Elements (2000), section
      * 6.3). No inertia.
      *
-     * The residual is the internal force of elements::SolidHexElements at
-     * zero velocity, the very function the explicit solver integrates,
-     * minus the loads of the further force contributions (tractions and
-     * follower pressures at the step's end time t_{n+1}), and the tangent
-     * its exact derivative (elements::SolidHexElements::compute_tangents()
-     * and each contribution's add_tangents()), so that a converged state is
-     * an explicit equilibrium and Newton converges quadratically.
+     * The residual is the internal force of the elements, taken through
+     * elements::ImplicitElements (elements::SolidHexElements: the explicit
+     * engine's force at zero velocity, the very function the explicit
+     * solver integrates; or elements::MixedUPElements: Q2 with condensed
+     * pressure and dilatation on an FE_Q(2) dof handler), minus the loads
+     * of the further force contributions (tractions and follower pressures
+     * at the step's end time t_{n+1}), and the tangent its exact derivative
+     * (the elements' compute_tangents() and each contribution's
+     * add_tangents()), so that Newton converges quadratically.
      *
      * Each load step from t_n to t_{n+1}: the first iteration solves
      * $K \delta u = -r$ with $\delta u$ prescribed on the constrained dofs
@@ -123,7 +125,7 @@ namespace rubberdyn
       QuasiStaticSolver(
         const DoFHandler<3, 3>                                   &dof_handler,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-        elements::SolidHexElements                               &elements,
+        elements::ImplicitElements                               &elements,
         const KinematicConstraints                               &constraints,
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,

@@ -1,0 +1,78 @@
+#ifndef rubberdyn_elements_implicit_elements_h
+#define rubberdyn_elements_implicit_elements_h
+
+#include <rubberdyn/base/vector.h>
+
+#include <functional>
+
+namespace rubberdyn
+{
+  namespace elements
+  {
+    struct ElementStepResult;
+
+    /**
+     * What the quasi-static Newton solver (time_integration::QuasiStaticSolver)
+     * needs of an element layer: the residual (internal force at zero
+     * velocity) with its stored energy, the consistent tangent element by
+     * element, and the history of inelastic laws. Implemented by
+     * SolidHexElements (Q1, F-bar or displacement: the explicit engine's
+     * force) and MixedUPElements (Q2 with condensed pressure and dilatation,
+     * quasi-static only), so that one Newton loop serves both
+     * (doc/theory.md, sections 10 and 11).
+     */
+    class ImplicitElements
+    {
+    public:
+      virtual ~ImplicitElements() = default;
+
+      /**
+       * Number of dofs of one element: the size of the index array and the
+       * side of the matrix passed to compute_tangents()'s callback (24 for
+       * the trilinear hexahedron, 81 for the triquadratic one).
+       */
+      virtual unsigned int
+      n_dofs_per_element() const = 0;
+
+      /** Number of element groups (parts). */
+      virtual unsigned int
+      n_groups() const = 0;
+
+      /**
+       * The internal force $f_{int}(u)$ (kN) at displacement @p u (ghosted,
+       * mm), added into @p f (ghost entries included: the caller compresses
+       * with add), and the stored energy (J) in @p result (overwritten,
+       * ElementStepResult: internal_energy, internal_energy_by_group,
+       * failure). Element failures are reported in @p result, not thrown.
+       * The new history of inelastic laws is kept until accept_history().
+       */
+      virtual void
+      compute_residual(const VectorType  &u,
+                       VectorType        &f,
+                       ElementStepResult &result) = 0;
+
+      /**
+       * The exact tangent $\partial f_{int}/\partial u$ at @p u (ghosted):
+       * @p add is called once per locally owned element with its
+       * n_dofs_per_element() local dof indices (node a, component i at
+       * 3 a + i, indices into the ghosted vectors) and its square matrix,
+       * row-major (kN/mm).
+       */
+      virtual void
+      compute_tangents(
+        const VectorType &u,
+        const std::function<void(const unsigned int *dofs, const double *K)>
+          &add) const = 0;
+
+      /** Whether a law keeps a history (its tangent is then not symmetric). */
+      virtual bool
+      has_history() const = 0;
+
+      /** Accept the history of the last compute_residual(). */
+      virtual void
+      accept_history() = 0;
+    };
+  } // namespace elements
+} // namespace rubberdyn
+
+#endif
