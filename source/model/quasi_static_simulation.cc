@@ -123,25 +123,10 @@ namespace rubberdyn
                                        direction_of_group);
       // Pressures and tractions: one contribution for all of them, as in
       // the explicit run.
-      std::vector<BoundaryCondition> loads;
-      for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
-        {
-          const BoundaryCondition &bc = model.boundary_conditions[c];
-          if (bc.type == BoundaryCondition::Type::pressure ||
-              bc.type == BoundaryCondition::Type::traction)
-            {
-              loads.push_back(bc);
-              condition_of_load.push_back(c);
-            }
-        }
+      surface_loads = setup::surface_loads(model, condition_of_load);
       std::vector<ForceContribution *> contributions;
-      if (!loads.empty())
-        {
-          surface_loads = std::make_unique<SurfaceLoads>(model.dof_handler,
-                                                         model.partitioner,
-                                                         loads);
-          contributions.push_back(surface_loads.get());
-        }
+      if (surface_loads)
+        contributions.push_back(surface_loads.get());
       history_nodes =
         std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
                                                     model.partitioner,

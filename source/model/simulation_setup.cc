@@ -1,5 +1,6 @@
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
 namespace rubberdyn
@@ -90,6 +91,30 @@ namespace rubberdyn
                   break;
               }
           }
+      }
+
+
+
+      std::unique_ptr<SurfaceLoads>
+      surface_loads(const Model               &model,
+                    std::vector<unsigned int> &condition_of_load)
+      {
+        std::vector<BoundaryCondition> loads;
+        for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+          {
+            const BoundaryCondition &bc = model.boundary_conditions[c];
+            if (bc.type == BoundaryCondition::Type::pressure ||
+                bc.type == BoundaryCondition::Type::traction)
+              {
+                loads.push_back(bc);
+                condition_of_load.push_back(c);
+              }
+          }
+        if (loads.empty())
+          return nullptr;
+        return std::make_unique<SurfaceLoads>(model.dof_handler,
+                                              model.partitioner,
+                                              loads);
       }
     } // namespace setup
   }   // namespace model

@@ -48,21 +48,7 @@ awk -F, '
     printf "%d load steps; largest deviation from eq. 4.8 %.4f %% (t = %.2f); balance %.2e; lateral %.2e\n", rows, 100 * worst, worst_t, worst_balance, worst_lateral
     exit (rows != 20 || worst > 0.002 || worst_balance > 1e-7 || worst_lateral > 1e-6)
   }' $name/time_history.csv
-awk '
-  /^  Step to/ { k = 0; next }
-  /^    iteration/ {
-    ++k
-    for (i = 1; i <= NF; ++i) if ($i == "relative") r = $(i + 1) + 0
-    if (k > 1 && previous < 1e-2) {
-      ++checked
-      if (r > 10 * previous^2 + 1e-11) { printf "not quadratic: %.3e after %.3e\n", r, previous; bad = 1 }
-    }
-    if (k > 6) { print "more than 6 iterations in a step"; bad = 1 }
-    if (k > most) most = k
-    previous = r
-  }
-  END { printf "quadratic convergence checked on %d iterations; at most %d iterations per step\n", checked, most
-        exit (bad || checked < 20) }' log.txt
+bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-2 10 6
 if [ "$nproc" -gt 1 ]; then
   mkdir -p serial && cd serial
   bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \

@@ -67,18 +67,4 @@ awk -F, '
     printf "%d load steps; largest deviation %.4f %%; load vs -p a %.2e; balance %.2e\n", rows, 100 * worst, worst_load, worst_balance
     exit (rows != 20 || worst > 0.002 || worst_load > 2e-8 || worst_balance > 1e-8)
   }' $name/time_history.csv
-awk '
-  /^  Step to/ { k = 0; next }
-  /^    iteration/ {
-    ++k
-    for (i = 1; i <= NF; ++i) if ($i == "relative") r = $(i + 1) + 0
-    if (k > 1 && previous < 1e-3) {
-      ++checked
-      if (r > 1e4 * previous^2 + 1e-11) { printf "not quadratic: %.3e after %.3e\n", r, previous; bad = 1 }
-      if (r > 1e-11 && r / previous^2 > constant) constant = r / previous^2
-    }
-    if (k > 5) { print "more than 5 iterations in a step"; bad = 1 }
-    previous = r
-  }
-  END { printf "second order checked on %d iterations, largest r_k / r_{k-1}^2 %.3g\n", checked, constant
-        exit (bad || checked < 20) }' log.txt
+bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-3 1e4 5

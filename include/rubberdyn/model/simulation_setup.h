@@ -4,6 +4,7 @@
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 
+#include <memory>
 #include <vector>
 
 namespace rubberdyn
@@ -16,6 +17,7 @@ namespace rubberdyn
   namespace model
   {
     class Model;
+    class SurfaceLoads;
 
     /**
      * The set-up every solver of a Model shares (model::ExplicitSimulation,
@@ -52,6 +54,17 @@ namespace rubberdyn
         time_integration::KinematicConstraints &constraints,
         std::vector<unsigned int>              &condition_of_group,
         std::vector<unsigned int>              &direction_of_group);
+
+      /**
+       * One SurfaceLoads contribution for all the pressure and traction
+       * conditions of the model, or nullptr if there is none. Appends to
+       * @p condition_of_load the condition of each of its loads.
+       *
+       * @throws InputError as the SurfaceLoads constructor does.
+       */
+      std::unique_ptr<SurfaceLoads>
+      surface_loads(const Model               &model,
+                    std::vector<unsigned int> &condition_of_load);
     } // namespace setup
   }   // namespace model
 } // namespace rubberdyn
