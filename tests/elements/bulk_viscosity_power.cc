@@ -36,6 +36,7 @@
 #include <random>
 
 #include "../tests.h"
+#include "distorted_block.h"
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -71,18 +72,7 @@ main(int argc, char **argv)
   // 1. Reported power = v . f_visc on distorted elements.
   {
     Triangulation<3> tria;
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              {3, 2, 1},
-                                              Point<3>(0., 0., 0.),
-                                              Point<3>(15., 10., 5.));
-    GridTools::transform(
-      [](const Point<3> &x) {
-        Point<3> y = x;
-        for (unsigned int d = 0; d < 3; ++d)
-          y[d] += 0.1 * std::sin(0.7 * x[(d + 1) % 3] + d) * x[(d + 2) % 3];
-        return y;
-      },
-      tria);
+    fixtures::make_distorted_block(tria, 3, 2);
     FESystem<3>   fe(FE_Q<3>(1), 3);
     DoFHandler<3> dof_handler(tria);
     dof_handler.distribute_dofs(fe);

@@ -36,6 +36,7 @@
 #include <stdexcept>
 
 #include "../tests.h"
+#include "distorted_block.h"
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -80,18 +81,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   Triangulation<3>                 tria;
-  GridGenerator::subdivided_hyper_rectangle(tria,
-                                            {4, 3, 1},
-                                            Point<3>(0., 0., 0.),
-                                            Point<3>(20., 15., 5.));
-  GridTools::transform(
-    [](const Point<3> &x) {
-      Point<3> y = x;
-      for (unsigned int d = 0; d < 3; ++d)
-        y[d] += 0.1 * std::sin(0.7 * x[(d + 1) % 3] + d) * x[(d + 2) % 3];
-      return y;
-    },
-    tria);
+  fixtures::make_distorted_block(tria, 4, 3);
   const types::material_id id_of_column[4] = {1, 2, 3, 9};
   for (const auto &cell : tria.active_cell_iterators())
     cell->set_material_id(

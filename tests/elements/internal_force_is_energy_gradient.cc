@@ -27,6 +27,7 @@
 #include <random>
 
 #include "../tests.h"
+#include "distorted_block.h"
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -39,20 +40,10 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle(tria, {3, 2, 1},
-                                            Point<3>(0., 0., 0.),
-                                            Point<3>(15., 10., 5.));
-  // Move the interior and boundary nodes off the lattice.
+  // The interior and boundary nodes off the lattice.
+  fixtures::make_distorted_block(tria, 3, 2);
   std::mt19937 generator(42);
   std::uniform_real_distribution<double> jitter(-0.8, 0.8);
-  GridTools::transform(
-    [&](const Point<3> &x) {
-      Point<3> y = x;
-      for (unsigned int d = 0; d < 3; ++d)
-        y[d] += 0.1 * std::sin(0.7 * x[(d + 1) % 3] + d) * x[(d + 2) % 3];
-      return y;
-    },
-    tria);
   FESystem<3>   fe(FE_Q<3>(1), 3);
   DoFHandler<3> dof_handler(tria);
   dof_handler.distribute_dofs(fe);

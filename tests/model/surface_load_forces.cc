@@ -36,6 +36,7 @@
 #include <rubberdyn/base/partitioner.h>
 #include <rubberdyn/model/surface_loads.h>
 
+#include <functional>
 #include <random>
 
 #include "../tests.h"
@@ -138,6 +139,26 @@ namespace
     bc.functions           = functions;
     bc.depends_on_position = depends_on_position;
     return bc;
+  }
+
+  /**
+   * X plus a shift of up to 0.2 mm in each direction, random but a function
+   * of the position (the same on every rank), seeded with @p salt.
+   */
+  std::function<Tensor<1, 3>(const Point<3> &)>
+  random_motion(const int salt)
+  {
+    return [salt](const Point<3> &X) {
+      std::seed_seq                          seed{int(std::lround(10. * X[0])),
+                         int(std::lround(10. * X[1])),
+                         int(std::lround(10. * X[2])) + salt};
+      std::mt19937                           generator(seed);
+      std::uniform_real_distribution<double> shift(-0.2, 0.2);
+      Tensor<1, 3>                           x = X;
+      for (unsigned int d = 0; d < 3; ++d)
+        x[d] += shift(generator);
+      return x;
+    };
   }
 
   struct Sums
@@ -349,17 +370,7 @@ main(int argc, char **argv)
   // 4. Nodes moved at random (the same on every rank: seeded, a function
   //    of the position), pressure on the whole closed surface.
   {
-    block.deform([](const Point<3> &X) {
-      std::seed_seq                          seed{int(std::lround(10. * X[0])),
-                         int(std::lround(10. * X[1])),
-                         int(std::lround(10. * X[2]))};
-      std::mt19937                           generator(seed);
-      std::uniform_real_distribution<double> shift(-0.2, 0.2);
-      Tensor<1, 3>                           x = X;
-      for (unsigned int d = 0; d < 3; ++d)
-        x[d] += shift(generator);
-      return x;
-    });
+    block.deform(random_motion(0));
     std::vector<model::BoundaryCondition> faces;
     for (unsigned int b = 0; b < 6; ++b)
       faces.push_back(
@@ -434,17 +445,7 @@ main(int argc, char **argv)
   //    1e-8 of |K w|. The traction adds no tangent (a dead load), and its
   //    forces do not change with u: their difference vanishes.
   {
-    block.deform([](const Point<3> &X) {
-      std::seed_seq                          seed{int(std::lround(10. * X[0])),
-                         int(std::lround(10. * X[1])),
-                         int(std::lround(10. * X[2])) + 7};
-      std::mt19937                           generator(seed);
-      std::uniform_real_distribution<double> shift(-0.2, 0.2);
-      Tensor<1, 3>                           x = X;
-      for (unsigned int d = 0; d < 3; ++d)
-        x[d] += shift(generator);
-      return x;
-    });
+    block.deform(random_motion(7));
     std::vector<model::BoundaryCondition> conditions;
     for (unsigned int b = 0; b < 6; ++b)
       conditions.push_back(make_condition("p",
