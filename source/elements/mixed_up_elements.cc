@@ -26,9 +26,11 @@ namespace rubberdyn
   {
     namespace
     {
-      constexpr unsigned int n_nodes = MixedUPElements::n_nodes;
-      constexpr unsigned int n_q     = MixedUPElements::n_q;
-      constexpr unsigned int n_p     = MixedUPElements::n_p;
+      // (Named apart from the Q1 files' n_nodes and n_q, which a unity
+      // build may put into the same translation unit.)
+      constexpr unsigned int q2_nodes  = MixedUPElements::n_nodes;
+      constexpr unsigned int q2_points = MixedUPElements::n_q;
+      constexpr unsigned int p1_modes  = MixedUPElements::n_p;
     } // namespace
 
 
@@ -37,15 +39,15 @@ namespace rubberdyn
     struct MixedUPElements::State
     {
       /** g_a = F^{-T} grad_X N_a at each Gauss point, [q][a]. */
-      Tensor<1, 3> g[n_q][n_nodes];
-      double       J[n_q];
+      Tensor<1, 3> g[q2_points][q2_nodes];
+      double       J[q2_points];
       /** The projected dilatation and pressure at the Gauss points. */
-      double J_tilde[n_q];
-      double p_tilde[n_q];
+      double J_tilde[q2_points];
+      double p_tilde[q2_points];
       /** tau(tilde F), its spatial tangent, and tr(tau)/3. */
-      Tensor<2, 3>          tau[n_q];
-      SymmetricTensor<4, 3> c[n_q];
-      double                p_tau[n_q];
+      Tensor<2, 3>          tau[q2_points];
+      SymmetricTensor<4, 3> c[q2_points];
+      double                p_tau[q2_points];
       /** Strain energy sum_q w_q W(tilde F) (J). */
       double energy;
     };
@@ -63,18 +65,18 @@ namespace rubberdyn
       void
       project(const Element &e, const double *f, double *result)
       {
-        double moments[n_p] = {0., 0., 0., 0.};
-        for (unsigned int q = 0; q < n_q; ++q)
-          for (unsigned int k = 0; k < n_p; ++k)
+        double moments[p1_modes] = {0., 0., 0., 0.};
+        for (unsigned int q = 0; q < q2_points; ++q)
+          for (unsigned int k = 0; k < p1_modes; ++k)
             moments[k] += e.JxW[q] * e.phi[q][k] * f[q];
-        double theta[n_p] = {0., 0., 0., 0.};
-        for (unsigned int k = 0; k < n_p; ++k)
-          for (unsigned int l = 0; l < n_p; ++l)
+        double theta[p1_modes] = {0., 0., 0., 0.};
+        for (unsigned int k = 0; k < p1_modes; ++k)
+          for (unsigned int l = 0; l < p1_modes; ++l)
             theta[k] += e.mass_inverse[k][l] * moments[l];
-        for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int q = 0; q < q2_points; ++q)
           {
             result[q] = 0.;
-            for (unsigned int k = 0; k < n_p; ++k)
+            for (unsigned int k = 0; k < p1_modes; ++k)
               result[q] += e.phi[q][k] * theta[k];
           }
       }
@@ -116,12 +118,12 @@ namespace rubberdyn
         }
 
       const FiniteElement<3> &fe = dof_handler.get_fe();
-      if (fe.n_components() != 3 || fe.n_dofs_per_cell() != 3 * n_nodes ||
+      if (fe.n_components() != 3 || fe.n_dofs_per_cell() != 3 * q2_nodes ||
           fe.degree != 2)
         throw std::invalid_argument(
           "MixedUPElements needs FESystem(FE_Q(2), 3)");
       const QGauss<3> gauss(3);
-      AssertThrow(gauss.size() == n_q, ExcInternalError());
+      AssertThrow(gauss.size() == q2_points, ExcInternalError());
       const MappingQ1<3>                   mapping;
       FEValues<3>                          fe_values(mapping,
                             fe,
@@ -148,7 +150,7 @@ namespace rubberdyn
               e.dofs[3 * ci.second + ci.first] =
                 partitioner->global_to_local(dof_indices[i]);
               if (ci.first == 0)
-                for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int q = 0; q < q2_points; ++q)
                   {
                     const Tensor<1, 3> grad =
                       fe_values.shape_grad_component(i, q, 0);
@@ -161,7 +163,7 @@ namespace rubberdyn
           // order on distorted cells, doc/theory.md section 11.1), centred
           // and scaled by the cell's diameter for conditioning.
           const double h = cell->diameter();
-          for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int q = 0; q < q2_points; ++q)
             {
               e.JxW[q]    = fe_values.JxW(q);
               e.phi[q][0] = 1.;
@@ -169,14 +171,14 @@ namespace rubberdyn
                 e.phi[q][1 + d] =
                   (fe_values.quadrature_point(q)[d] - e.centre[d]) / h;
             }
-          FullMatrix<double> mass(n_p, n_p), inverse(n_p, n_p);
-          for (unsigned int q = 0; q < n_q; ++q)
-            for (unsigned int k = 0; k < n_p; ++k)
-              for (unsigned int l = 0; l < n_p; ++l)
+          FullMatrix<double> mass(p1_modes, p1_modes), inverse(p1_modes, p1_modes);
+          for (unsigned int q = 0; q < q2_points; ++q)
+            for (unsigned int k = 0; k < p1_modes; ++k)
+              for (unsigned int l = 0; l < p1_modes; ++l)
                 mass(k, l) += e.JxW[q] * e.phi[q][k] * e.phi[q][l];
           inverse.invert(mass);
-          for (unsigned int k = 0; k < n_p; ++k)
-            for (unsigned int l = 0; l < n_p; ++l)
+          for (unsigned int k = 0; k < p1_modes; ++k)
+            for (unsigned int l = 0; l < p1_modes; ++l)
               e.mass_inverse[k][l] = inverse(k, l);
           elements.push_back(e);
         }
@@ -191,16 +193,16 @@ namespace rubberdyn
                               State         &s,
                               std::string   &message) const
     {
-      Tensor<1, 3> ue[n_nodes];
-      for (unsigned int a = 0; a < n_nodes; ++a)
+      Tensor<1, 3> ue[q2_nodes];
+      for (unsigned int a = 0; a < q2_nodes; ++a)
         for (unsigned int i = 0; i < 3; ++i)
           ue[a][i] = u_local[e.dofs[3 * a + i]];
-      Tensor<2, 3> F[n_q];
-      for (unsigned int q = 0; q < n_q; ++q)
+      Tensor<2, 3> F[q2_points];
+      for (unsigned int q = 0; q < q2_points; ++q)
         {
           for (unsigned int d = 0; d < 3; ++d)
             F[q][d][d] = 1.;
-          for (unsigned int a = 0; a < n_nodes; ++a)
+          for (unsigned int a = 0; a < q2_nodes; ++a)
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int c = 0; c < 3; ++c)
                 F[q][i][c] += ue[a][i] * e.grad[q][a][c];
@@ -212,7 +214,7 @@ namespace rubberdyn
               return false;
             }
           const Tensor<2, 3> F_inverse_transpose = transpose(invert(F[q]));
-          for (unsigned int a = 0; a < n_nodes; ++a)
+          for (unsigned int a = 0; a < q2_nodes; ++a)
             {
               Tensor<1, 3> grad;
               for (unsigned int c = 0; c < 3; ++c)
@@ -222,9 +224,9 @@ namespace rubberdyn
         }
       project(e, s.J, s.J_tilde);
       const materials::MaterialModel<3> &law = *group_laws[e.group];
-      double                             pressure_over_J[n_q];
+      double                             pressure_over_J[q2_points];
       s.energy = 0.;
-      for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int q = 0; q < q2_points; ++q)
         {
           if (!(s.J_tilde[q] > 0.))
             {
@@ -285,13 +287,13 @@ namespace rubberdyn
               continue;
             }
           // f_a = sum_q w_q [tau - p_tau I + J p_tilde I] g_a.
-          for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int q = 0; q < q2_points; ++q)
             {
               Tensor<2, 3> A = s.tau[q];
               for (unsigned int d = 0; d < 3; ++d)
                 A[d][d] += s.J[q] * s.p_tilde[q] - s.p_tau[q];
               A *= e.JxW[q];
-              for (unsigned int a = 0; a < n_nodes; ++a)
+              for (unsigned int a = 0; a < q2_nodes; ++a)
                 {
                   const Tensor<1, 3> fa = A * s.g[q][a];
                   for (unsigned int i = 0; i < 3; ++i)
@@ -311,17 +313,17 @@ namespace rubberdyn
       const std::function<void(const unsigned int *dofs, const double *K)> &add)
       const
     {
-      constexpr unsigned int n_dofs  = 3 * n_nodes;
+      constexpr unsigned int n_dofs  = 3 * q2_nodes;
       const double *const    u_local = u.begin();
       std::vector<double>    K(n_dofs * n_dofs);
       State                  s;
       std::string            message;
-      Tensor<2, 3>           A[n_q];
+      Tensor<2, 3>           A[q2_points];
       for (const Element &e : elements)
         {
           if (!evaluate(e, u_local, true, s, message))
             throw InvertedMaterialError(0.);
-          for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int q = 0; q < q2_points; ++q)
             {
               A[q] = s.tau[q];
               for (unsigned int d = 0; d < 3; ++d)
@@ -335,15 +337,15 @@ namespace rubberdyn
           // d tilde J / tilde J^2, d tilde p = Pi(d(p_tau / tilde J)),
           // dA = d tau - d p_tau I + (dJ tilde p + J d tilde p) I,
           // df_a = sum_q w_q [dA g_a - g_a[j] A g_b].
-          double       dJ[n_q], dJ_tilde[n_q], ds[n_q], dp_tilde[n_q];
-          Tensor<2, 3> d_tau[n_q];
-          for (unsigned int b = 0; b < n_nodes; ++b)
+          double       dJ[q2_points], dJ_tilde[q2_points], ds[q2_points], dp_tilde[q2_points];
+          Tensor<2, 3> d_tau[q2_points];
+          for (unsigned int b = 0; b < q2_nodes; ++b)
             for (unsigned int j = 0; j < 3; ++j)
               {
-                for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int q = 0; q < q2_points; ++q)
                   dJ[q] = s.J[q] * s.g[q][b][j];
                 project(e, dJ, dJ_tilde);
-                for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int q = 0; q < q2_points; ++q)
                   {
                     Tensor<2, 3> l;
                     for (unsigned int n = 0; n < 3; ++n)
@@ -360,7 +362,7 @@ namespace rubberdyn
                   }
                 project(e, ds, dp_tilde);
                 const unsigned int column = 3 * b + j;
-                for (unsigned int q = 0; q < n_q; ++q)
+                for (unsigned int q = 0; q < q2_points; ++q)
                   {
                     Tensor<2, 3> dA         = d_tau[q];
                     const double volumetric = -trace(d_tau[q]) / 3. +
@@ -370,7 +372,7 @@ namespace rubberdyn
                       dA[d][d] += volumetric;
                     dA *= e.JxW[q];
                     const Tensor<1, 3> A_gb = e.JxW[q] * (A[q] * s.g[q][b]);
-                    for (unsigned int a = 0; a < n_nodes; ++a)
+                    for (unsigned int a = 0; a < q2_nodes; ++a)
                       {
                         const Tensor<1, 3> df =
                           dA * s.g[q][a] - s.g[q][a][j] * A_gb;
@@ -388,14 +390,14 @@ namespace rubberdyn
     void
     MixedUPElements::condensed_fields(const VectorType        &u,
                                       const unsigned int       e,
-                                      std::array<double, n_q> &dilatation,
-                                      std::array<double, n_q> &pressure) const
+                                      std::array<double, q2_points> &dilatation,
+                                      std::array<double, q2_points> &pressure) const
     {
       State       s;
       std::string message;
       if (!evaluate(elements[e], u.begin(), false, s, message))
         throw std::runtime_error("MixedUPElements: " + message);
-      for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int q = 0; q < q2_points; ++q)
         {
           dilatation[q] = s.J_tilde[q];
           pressure[q]   = s.p_tilde[q];

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 // Set-up, lumped mass, reference steps and output averages of the
@@ -179,6 +180,10 @@ namespace rubberdyn
             blocks.push_back(block);
           }
 
+      cut_of_block.assign(blocks.size(), numbers::invalid_unsigned_int);
+      cuts.clear();
+      shortenings.clear();
+
       history_old.assign(history_size, 0.);
       for (const internal::HexBlock &block : blocks)
         {
@@ -190,6 +195,113 @@ namespace rubberdyn
               n_state));
         }
       history_new = history_old;
+    }
+
+
+
+    std::vector<unsigned int>
+    SolidHexElements::cut_sections(const std::vector<SectionPlane> &sections)
+    {
+      AssertThrow(shortenings.empty(),
+                  ExcMessage("The sections are cut only once"));
+      std::vector<unsigned int> n_cut(sections.size(), 0);
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const internal::HexBlock &block = blocks[b];
+          SectionCut                cut;
+          cut.block                   = b;
+          bool                      any = false;
+          for (unsigned int l = 0; l < lanes; ++l)
+            {
+              cut.section[l] = numbers::invalid_unsigned_int;
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                for (unsigned int d = 0; d < 3; ++d)
+                  cut.direction[a][d][l] = 0.;
+            }
+          for (unsigned int l = 0; l < block.n_active; ++l)
+            for (unsigned int s = 0; s < sections.size(); ++s)
+              {
+                if (sections[s].group != block.group)
+                  continue;
+                double distance[n_nodes], lo = 0., hi = 0., size = 0.;
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    distance[a] = 0.;
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        distance[a] += (block.X[a][d][l] -
+                                        sections[s].point[d]) *
+                                       sections[s].normal[d];
+                        size = std::max(size,
+                                        std::abs(block.X[a][d][l] -
+                                                 block.X[0][d][l]));
+                      }
+                    lo = std::min(lo, distance[a]);
+                    hi = std::max(hi, distance[a]);
+                  }
+                const double tolerance = 1e-9 * size;
+                if (!(lo < -tolerance && hi > tolerance))
+                  continue;
+                if (cut.section[l] != numbers::invalid_unsigned_int)
+                  {
+                    std::ostringstream message;
+                    message << "the element of cell "
+                            << elements[block.element[l]].cell_id << " at ("
+                            << elements[block.element[l]].centre
+                            << ") is cut by two pretension sections";
+                    throw std::invalid_argument(message.str());
+                  }
+                cut.section[l] = s;
+                any            = true;
+                ++n_cut[s];
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  if (distance[a] > tolerance)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      cut.direction[a][d][l] = sections[s].normal[d];
+              }
+          if (any)
+            {
+              cut_of_block[b] = cuts.size();
+              cuts.push_back(cut);
+            }
+        }
+      shortenings.assign(sections.size(), 0.);
+      return n_cut;
+    }
+
+
+
+    void
+    SolidHexElements::set_section_shortenings(
+      const std::vector<double> &new_shortenings)
+    {
+      AssertThrow(new_shortenings.size() == shortenings.size(),
+                  ExcDimensionMismatch(new_shortenings.size(),
+                                       shortenings.size()));
+      shortenings = new_shortenings;
+    }
+
+
+
+    bool
+    SolidHexElements::block_offsets(
+      const unsigned int block,
+      double offsets[internal::n_nodes][3][internal::lanes]) const
+    {
+      if (cut_of_block.empty() ||
+          cut_of_block[block] == numbers::invalid_unsigned_int)
+        return false;
+      const SectionCut &cut = cuts[cut_of_block[block]];
+      for (unsigned int l = 0; l < lanes; ++l)
+        {
+          const double delta = cut.section[l] == numbers::invalid_unsigned_int ?
+                                 0. :
+                                 shortenings[cut.section[l]];
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              offsets[a][d][l] = delta * cut.direction[a][d][l];
+        }
+      return true;
     }
 
 
@@ -330,6 +442,11 @@ namespace rubberdyn
           scratch.resize(n_state);
           lanes_of::Lanes ue[n_nodes][3], F0[3][3], G[3][3], J0;
           lanes_of::gather(block, u.begin(), ue);
+          double offsets[n_nodes][3][lanes];
+          if (block_offsets(&block - blocks.data(), offsets))
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                ue[a][d] += lanes_of::load(offsets[a][d]);
           lanes_of::Lanes H[n_q][3][3], H0[3][3];
           lanes_of::reference_gradients(ue, H, H0);
           lanes_of::deformation_gradient(H0,

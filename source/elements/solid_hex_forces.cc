@@ -60,6 +60,11 @@ namespace rubberdyn
         double                           stabilization_modulus;
         /** F-bar collapse threshold on J_q / J0, 0: no check. */
         double                           collapse_ratio;
+        /**
+         * The block's section offsets [node][component][lane] (mm), added
+         * to the gathered displacements, or nullptr (no section cuts it).
+         */
+        const double *offsets;
       };
 
       // One block of one formulation. Returns false if an active lane
@@ -79,6 +84,10 @@ namespace rubberdyn
         Lanes ue[n_nodes][3], ve[n_nodes][3];
         gather(block, context.u, ue);
         gather(block, context.v, ve);
+        if (context.offsets != nullptr)
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              ue[a][d] += load(context.offsets + (3 * a + d) * L);
 
         // Centre: F0, J0, g0_a = F0^{-T} grad_X N_a(centre), volumetric
         // strain rate div v = sum_a v_a . g0_a.
@@ -416,6 +425,7 @@ namespace rubberdyn
       result.failure.cell_id.clear();
       result.failure.position = Point<3>();
       result.failure.message.clear();
+      result.section_force.assign(shortenings.size(), 0.);
 
       BlockContext context;
       context.reference                = &reference;
@@ -427,9 +437,13 @@ namespace rubberdyn
       double *const force = f.begin();
 
       BlockResult block_result;
-      for (const internal::HexBlock &block : blocks)
+      double      offsets[n_nodes][3][L];
+      for (unsigned int b = 0; b < blocks.size(); ++b)
         {
+          const internal::HexBlock &block = blocks[b];
           const GroupData &group        = groups[block.group];
+          context.offsets =
+            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr;
           context.kernel                = group.kernel.get();
           context.density               = group.density;
           context.stabilization_modulus = group.stabilization_modulus;
@@ -482,10 +496,69 @@ namespace rubberdyn
                 for (unsigned int d = 0; d < 3; ++d)
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];
             }
+          // N_s = sum_e g_e . f_e over the elements the section cuts.
+          if (context.offsets != nullptr)
+            {
+              const SectionCut &cut = cuts[cut_of_block[b]];
+              for (unsigned int l = 0; l < block.n_active; ++l)
+                if (cut.section[l] != numbers::invalid_unsigned_int)
+                  for (unsigned int a = 0; a < n_nodes; ++a)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      result.section_force[cut.section[l]] +=
+                        cut.direction[a][d][l] * block_result.force[a][d][l];
+            }
           result.internal_energy_by_group[block.group] += group_energy;
           result.bulk_viscosity_power_by_group[block.group] +=
             group_viscous_power;
         }
+    }
+
+
+
+    std::vector<double>
+    SolidHexElements::section_forces(const VectorType &u) const
+    {
+      // The kernel on the cut blocks only, without bulk viscosity (the
+      // section force is the stress's), writing the history into scratch.
+      std::vector<double> force(shortenings.size(), 0.);
+      BlockContext        context;
+      context.reference                = &reference;
+      context.u                        = u.begin();
+      context.v                        = u.begin(); // unused: no viscosity
+      context.bulk_viscosity_linear    = 0.;
+      context.bulk_viscosity_quadratic = 0.;
+      context.collapse_ratio           = 0.;
+      BlockResult         block_result;
+      double              offsets[n_nodes][3][L];
+      std::vector<double> scratch;
+      double              no_scaling[L];
+      std::fill(no_scaling, no_scaling + L, 1.);
+      for (const SectionCut &cut : cuts)
+        {
+          const internal::HexBlock &block = blocks[cut.block];
+          const GroupData          &group = groups[block.group];
+          block_offsets(cut.block, offsets);
+          context.offsets               = &offsets[0][0][0];
+          context.kernel                = group.kernel.get();
+          context.density               = group.density;
+          context.stabilization_modulus = group.stabilization_modulus;
+          context.history_old = history_old.data() + block.history_offset;
+          scratch.resize(n_q * L * group.law->n_state_variables());
+          context.history_new = scratch.data();
+          if (!evaluate_block(block,
+                              group.formulation == Formulation::fbar,
+                              context,
+                              no_scaling,
+                              block_result))
+            continue;
+          for (unsigned int l = 0; l < block.n_active; ++l)
+            if (cut.section[l] != numbers::invalid_unsigned_int)
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                for (unsigned int d = 0; d < 3; ++d)
+                  force[cut.section[l]] +=
+                    cut.direction[a][d][l] * block_result.force[a][d][l];
+        }
+      return force;
     }
   } // namespace elements
 } // namespace rubberdyn

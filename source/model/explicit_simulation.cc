@@ -431,6 +431,10 @@ namespace rubberdyn
       elements = std::make_unique<elements::SolidHexElements>();
       elements->initialize(model.dof_handler, model.partitioner, groups,
                            element_settings);
+      // Pretension sections (locked: their shortenings come with the
+      // preload, start_from()).
+      if (!model.pretension_sections.empty())
+        setup::cut_pretension_sections(model, *elements);
 
       // Mass scaling: elements whose stable step is below the target get
       // added density.
@@ -682,6 +686,33 @@ namespace rubberdyn
 
 
 
+    void
+    ExplicitSimulation::start_from(const PreloadState &state)
+    {
+      AssertThrow(state.history.size() == elements->history().size() &&
+                    state.shortenings.size() == elements->n_sections(),
+                  ExcMessage("The preload does not fit the elements"));
+      elements->history() = state.history;
+      elements->set_section_shortenings(state.shortenings);
+      explicit_solver->set_initial_displacement(state.displacement);
+    }
+
+
+
+    PreloadState
+    ExplicitSimulation::read_preload(const std::string &directory,
+                                     const std::string &parameters) const
+    {
+      return model::read_preload(directory,
+                                 parameters,
+                                 model.partitioner,
+                                 elements->history().size(),
+                                 elements->n_sections(),
+                                 model.comm);
+    }
+
+
+
     const time_integration::ExplicitSolver &
     ExplicitSimulation::solver() const
     {
@@ -715,6 +746,14 @@ namespace rubberdyn
       add_postprocessor(std::make_unique<InteractionEnergyColumns>(
         model, condition_of_group, surface_loads.get(), condition_of_load,
         surfaces));
+      if (!model.pretension_sections.empty())
+        {
+          names.clear();
+          for (const PretensionSection &section : model.pretension_sections)
+            names.push_back(section.name);
+          add_postprocessor(
+            std::make_unique<postprocess::PretensionSectionColumns>(names));
+        }
       if (!output.history_nodes.empty())
         add_postprocessor(std::make_unique<postprocess::HistoryNodeColumns>(
           std::make_unique<postprocess::HistoryNodes>(model.dof_handler,

@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rubberdyn/base/binary_io.h>
+#include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
@@ -59,46 +60,13 @@ namespace rubberdyn
         return time;
       }
 
-      /**
-       * If any rank has a non-empty @p message, throw an InputError with
-       * the first one on every rank (a failure on one rank must end all
-       * ranks, never leave the others waiting in a collective).
-       */
-      void
-      throw_if_any(const MPI_Comm     comm,
-                   const std::string &entry,
-                   const std::string &message)
-      {
-        for (const std::string &m : Utilities::MPI::all_gather(comm, message))
-          if (!m.empty())
-            throw InputError(entry, m);
-      }
-
+      using durable_files::sync_directory;
+      using durable_files::throw_if_any;
       /** Write @p data to @p path and fsync it. */
-      void
+      inline void
       write_durably(const std::string &path, const std::string &data)
       {
-        std::FILE *file = std::fopen(path.c_str(), "wb");
-        if (file == nullptr)
-          throw std::runtime_error("cannot write " + path);
-        const bool written =
-          std::fwrite(data.data(), 1, data.size(), file) == data.size() &&
-          std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
-        std::fclose(file);
-        if (!written)
-          throw std::runtime_error("cannot write " + path);
-      }
-
-      /** fsync a directory, so that renames in it are durable. */
-      void
-      sync_directory(const std::string &path)
-      {
-        const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY);
-        if (fd >= 0)
-          {
-            ::fsync(fd);
-            ::close(fd);
-          }
+        durable_files::write(path, data);
       }
 
       std::string

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 
 namespace rubberdyn
 {
@@ -50,8 +51,10 @@ namespace rubberdyn
           if (part.rigid)
             refuse("the rigid part '" + part.name + "'",
                    "Parts/" + part.name + "/Model");
-          if (part.initial_velocity.norm() != 0. ||
-              part.initial_angular_velocity.norm() != 0.)
+          // (In 'quasi-static then explicit' they are the explicit run's.)
+          if (time_integration.scheme == "quasi-static" &&
+              (part.initial_velocity.norm() != 0. ||
+               part.initial_angular_velocity.norm() != 0.))
             refuse("an initial velocity of the part '" + part.name + "'",
                    "Parts/" + part.name + "/Initial velocity");
         }
@@ -78,7 +81,7 @@ namespace rubberdyn
         refuse("mass scaling", "Time integration/Mass scaling time step");
       if (output.checkpoint_interval > 0.)
         refuse("checkpoints", "Output/Checkpoint interval");
-      if (output.restart)
+      if (output.restart && time_integration.scheme == "quasi-static")
         refuse("a restart", "Output/Restart from checkpoint");
     }
 
@@ -112,6 +115,7 @@ namespace rubberdyn
                             model.partitioner,
                             setup::element_groups(model),
                             setup::element_settings(time_integration));
+          cut_pretension_sections(*hexes);
           elements = std::move(hexes);
         }
       constraints = std::make_unique<time_integration::KinematicConstraints>(
@@ -138,12 +142,54 @@ namespace rubberdyn
         *constraints,
         contributions,
         time_integration.quasi_static,
-        model.comm);
+        model.comm,
+        pretension_loads);
+    }
+
+
+
+    void
+    QuasiStaticSimulation::cut_pretension_sections(
+      elements::SolidHexElements &hexes)
+    {
+      const std::vector<PretensionSection> &sections =
+        model.pretension_sections;
+      if (sections.empty())
+        return;
+      cut_elements = setup::cut_pretension_sections(model, hexes);
+      for (const PretensionSection &section : sections)
+        {
+          time_integration::PretensionLoad load;
+          load.force_control = section.force_control;
+          load.target_force  = section.target_force;
+          load.shortening    = section.shortening;
+          load.lock_time     = section.lock_time;
+          pretension_loads.push_back(load);
+        }
     }
 
 
 
     QuasiStaticSimulation::~QuasiStaticSimulation() = default;
+
+
+
+    PreloadState
+    QuasiStaticSimulation::preload_state() const
+    {
+      const auto *hexes =
+        dynamic_cast<const elements::SolidHexElements *>(elements.get());
+      AssertThrow(hexes != nullptr,
+                  ExcMessage("A preload needs the F-bar or displacement "
+                             "elements"));
+      PreloadState state;
+      state.displacement = newton->displacement();
+      state.history        = hexes->history();
+      state.shortenings    = newton->section_shortenings();
+      state.section_forces = newton->section_forces();
+      state.time           = newton->time();
+      return state;
+    }
 
 
 
@@ -166,6 +212,20 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
+      for (unsigned int s = 0; s < model.pretension_sections.size(); ++s)
+        {
+          const PretensionSection &section = model.pretension_sections[s];
+          log << "  Pretension section " << section.name << ": "
+              << cut_elements[s] << " elements of " << model.parts[section.part].name
+              << " cut, "
+              << (section.force_control ?
+                    "force " + Utilities::to_string(section.target_force) +
+                      " kN" :
+                    "shortening " + Utilities::to_string(section.shortening) +
+                      " mm")
+              << " at t = " << section.lock_time << ", then locked"
+              << std::endl;
+        }
     }
 
 
@@ -195,6 +255,9 @@ namespace rubberdyn
         for (const std::string quantity : {"_force", "_moment"})
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(bc.name + quantity + xyz[d]);
+      for (const PretensionSection &section : model.pretension_sections)
+        for (const std::string quantity : {"_force", "_shortening"})
+          columns.push_back(section.name + quantity);
       for (const std::string &column : history_nodes->columns())
         columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
@@ -240,6 +303,11 @@ namespace rubberdyn
               values.push_back(force[c][d]);
             for (unsigned int d = 0; d < 3; ++d)
               values.push_back(moment[c][d]);
+          }
+        for (unsigned int k = 0; k < s.section_forces().size(); ++k)
+          {
+            values.push_back(s.section_forces()[k]);
+            values.push_back(s.section_shortenings()[k]);
           }
         history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);

@@ -1,7 +1,13 @@
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
+
+#include <sstream>
+#include <stdexcept>
 
 namespace rubberdyn
 {
@@ -115,6 +121,54 @@ namespace rubberdyn
         return std::make_unique<SurfaceLoads>(model.dof_handler,
                                               model.partitioner,
                                               loads);
+      }
+
+
+
+      std::vector<unsigned int>
+      cut_pretension_sections(const Model                &model,
+                              elements::SolidHexElements &hexes)
+      {
+        const std::vector<PretensionSection> &sections =
+          model.pretension_sections;
+        std::vector<elements::SectionPlane> planes;
+        for (const PretensionSection &section : sections)
+          planes.push_back({section.point, section.normal, section.part});
+        std::vector<unsigned int> n_cut;
+        std::string               error;
+        try
+          {
+            n_cut = hexes.cut_sections(planes);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            error = e.what();
+            n_cut.assign(sections.size(), 0);
+          }
+        // (An element cut twice on one rank ends every rank.)
+        for (const std::string &m :
+             Utilities::MPI::all_gather(model.comm, error))
+          if (!m.empty())
+            throw InputError("Pretension sections/Names", m);
+        Utilities::MPI::sum(ArrayView<const unsigned int>(n_cut),
+                            model.comm,
+                            ArrayView<unsigned int>(n_cut));
+        for (unsigned int s = 0; s < sections.size(); ++s)
+          if (n_cut[s] == 0)
+            {
+              const PretensionSection &section = sections[s];
+              std::ostringstream       where;
+              where << "the plane through (" << section.point
+                    << ") with normal (" << section.normal
+                    << ") cuts no element of the part '"
+                    << model.parts[section.part].name
+                    << "': it misses the part, or lies on element faces "
+                       "(move it inside a layer of elements)";
+              throw InputError("Pretension sections/" + section.name +
+                                 "/Point",
+                               where.str());
+            }
+        return n_cut;
       }
     } // namespace setup
   }   // namespace model

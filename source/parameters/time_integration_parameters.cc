@@ -92,7 +92,7 @@ namespace rubberdyn
                           "norm decreases and no element inverts.");
         prm.declare_entry("Linear solver", "automatic",
                           Patterns::Selection("automatic|direct|AMG"),
-                          "'direct': sparse LU (Trilinos Amesos KLU); "
+                          "'direct': sparse LU (Trilinos Amesos, Direct solver); "
                           "'AMG': CG (hyperelastic laws) or GMRES (laws "
                           "with a history) preconditioned by Trilinos ML "
                           "algebraic multigrid with the six rigid-body "
@@ -101,6 +101,12 @@ namespace rubberdyn
         prm.declare_entry("Direct solver limit", "60000", Patterns::Integer(0),
                           "'automatic' uses the direct solver up to this "
                           "many dofs (-).");
+        prm.declare_entry("Direct solver", "MUMPS",
+                          Patterns::Selection("MUMPS|KLU"),
+                          "The sparse LU of 'direct' (Trilinos Amesos): "
+                          "'MUMPS' (multifrontal, distributed over the "
+                          "ranks) or 'KLU' (serial; 10 to 30 times slower "
+                          "in 3D, see benchmarks/README.md).");
         prm.declare_entry("Linear tolerance", "1e-10", Patterns::Double(0.),
                           "AMG: relative residual of the CG or GMRES solve "
                           "(-).");
@@ -143,6 +149,8 @@ namespace rubberdyn
           solver == "AMG"    ? QuasiStatic::LinearSolver::amg :
                                QuasiStatic::LinearSolver::automatic;
         q.direct_solver_limit = prm.get_integer("Direct solver limit");
+        q.direct_solver =
+          prm.get("Direct solver") == "KLU" ? "Amesos_Klu" : "Amesos_Mumps";
         q.linear_tolerance    = prm.get_double("Linear tolerance");
       }
       prm.leave_subsection();

@@ -1,3 +1,7 @@
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/model/model.h>
 #include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -127,6 +131,53 @@ namespace rubberdyn
         {
           add_vector_values(force[c], values);
           add_vector_values(moment[c], values);
+        }
+    }
+
+
+
+    PretensionSectionColumns::PretensionSectionColumns(
+      const std::vector<std::string> &section_names)
+      : section_names(section_names)
+    {}
+
+
+
+    std::string
+    PretensionSectionColumns::name() const
+    {
+      return "pretension sections";
+    }
+
+
+
+    std::vector<std::string>
+    PretensionSectionColumns::history_columns() const
+    {
+      std::vector<std::string> columns;
+      for (const std::string &section : section_names)
+        {
+          columns.push_back(section + "_force");
+          columns.push_back(section + "_shortening");
+        }
+      return columns;
+    }
+
+
+
+    void
+    PretensionSectionColumns::history_values(const SimulationView &view,
+                                             std::vector<double>  &values)
+    {
+      std::vector<double> force =
+        view.elements.section_forces(view.solver.displacement());
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(force),
+                                  view.model.comm,
+                                  dealii::ArrayView<double>(force));
+      for (unsigned int s = 0; s < section_names.size(); ++s)
+        {
+          values.push_back(force[s]);
+          values.push_back(view.elements.section_shortenings()[s]);
         }
     }
 

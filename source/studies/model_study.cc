@@ -9,6 +9,7 @@
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/material_registry.h>
 #include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/preloaded_simulation.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/studies/model_study.h>
@@ -246,6 +247,154 @@ namespace rubberdyn
           }
         return function;
       }
+
+
+
+      /** `Pretension sections`: the names, then one subsection each. */
+      void
+      declare_pretension_sections(ParameterHandler            &prm,
+                                  const registry::ListedNames &names)
+      {
+        prm.enter_subsection("Pretension sections");
+        prm.declare_entry(
+          "Names", "", Patterns::Anything(),
+          "Names of the bolt pretension sections, separated by commas; each "
+          "has a subsection of its name. A section is a plane across a part "
+          "(a bolt's shank): the elements of the part it cuts are made "
+          "shorter across it by the section's shortening, which the "
+          "quasi-static solver drives to the Target force (or the "
+          "prescribed Shortening) and then holds (locks) from the Lock time "
+          "on, as CalculiX's *PRE-TENSION SECTION. Quasi-static schemes "
+          "only. The time history gets <name>_force (kN, the axial force "
+          "through the section, tension positive) and <name>_shortening "
+          "(mm).");
+        for (const std::string &name :
+             names_with_template(names, "Pretension sections"))
+          {
+            prm.enter_subsection(name);
+            prm.declare_entry("Part", "", Patterns::Anything(),
+                              "The deformable part the plane cuts (F-bar or "
+                              "displacement element); the cut elements must "
+                              "form one layer across the shank, clear of "
+                              "other parts.");
+            prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
+                              "A point of the section plane (mm). Put the "
+                              "plane inside a layer of elements, not on "
+                              "their faces.");
+            prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
+                              "Normal of the plane, the bolt's axis (either "
+                              "sense; need not be a unit vector).");
+            prm.declare_entry("Control", "force",
+                              Patterns::Selection("force|shortening"),
+                              "'force': the force through the section "
+                              "rises linearly from 0 at t = 0 to the Target "
+                              "force at the Lock time; 'shortening': the "
+                              "shortening rises linearly to Shortening at "
+                              "the Lock time. Both are held from then on "
+                              "(the shortening stays fixed: the force then "
+                              "follows the other loads).");
+            prm.declare_entry("Target force", "0", Patterns::Double(),
+                              "Axial force at the Lock time (kN, > 0: "
+                              "tension), Control = force.");
+            prm.declare_entry("Shortening", "0", Patterns::Double(),
+                              "Shortening at the Lock time (mm, > 0), "
+                              "Control = shortening.");
+            prm.declare_entry("Lock time", "1", Patterns::Double(),
+                              "Pseudo-time of the quasi-static load path at "
+                              "which the target is reached and the section "
+                              "locked (-; in (0, Time integration/"
+                              "Quasi-static end time]).");
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
+
+
+
+      /**
+       * Read `Pretension sections` into @p m (after its parts).
+       *
+       * @throws InputError naming the entry: an unknown, rigid or mixed u-p
+       *   part, a zero normal, a target force or shortening <= 0, a lock
+       *   time outside (0, Quasi-static end time], or a section in an
+       *   explicit run.
+       */
+      void
+      parse_pretension_sections(ParameterHandler                  &prm,
+                                const parameters::TimeIntegration &time,
+                                model::Model                      &m)
+      {
+        prm.enter_subsection("Pretension sections");
+        for (const std::string &name : listed_names(prm))
+          {
+            const std::string path = "Pretension sections/" + name;
+            if (time.scheme == "explicit")
+              throw InputError("Time integration/Scheme",
+                               "the pretension section '" + name +
+                                 "' needs 'quasi-static' or 'quasi-static "
+                                 "then explicit': its force is reached on "
+                                 "the quasi-static load path");
+            prm.enter_subsection(name);
+            model::PretensionSection section;
+            section.name            = name;
+            const std::string part  = Utilities::trim(prm.get("Part"));
+            bool              found = false;
+            for (unsigned int p = 0; p < m.parts.size(); ++p)
+              if (m.parts[p].name == part)
+                {
+                  found        = true;
+                  section.part = p;
+                }
+            if (!found)
+              throw InputError(path + "/Part",
+                               "names no part ('" + part.substr(0, 40) +
+                                 "' is not in Parts/Names)");
+            const model::Part &cut_part = m.parts[section.part];
+            if (cut_part.rigid)
+              throw InputError(path + "/Part",
+                               "the part '" + part +
+                                 "' is rigid: a section cuts a deformable "
+                                 "part");
+            if (cut_part.formulation == elements::Formulation::mixed_up)
+              throw InputError(path + "/Part",
+                               "the part '" + part +
+                                 "' uses the mixed u-p element, which takes "
+                                 "no pretension section yet; use 'F-bar'");
+            section.point =
+              Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
+            const Tensor<1, 3> normal =
+              parse_vector(prm.get("Normal"), path + "/Normal");
+            if (!(normal.norm() > 0.))
+              throw InputError(path + "/Normal", "must not be zero");
+            section.normal        = normal / normal.norm();
+            section.force_control = prm.get("Control") == "force";
+            section.target_force  = prm.get_double("Target force");
+            section.shortening    = prm.get_double("Shortening");
+            section.lock_time     = prm.get_double("Lock time");
+            if (section.force_control && !(section.target_force > 0.))
+              throw InputError(path + "/Target force",
+                               "must be > 0 kN (a tension) with Control = "
+                               "force, not " +
+                                 prm.get("Target force"));
+            if (!section.force_control && !(section.shortening > 0.))
+              throw InputError(path + "/Shortening",
+                               "must be > 0 mm with Control = shortening, "
+                               "not " +
+                                 prm.get("Shortening"));
+            if (!(section.lock_time > 0.) ||
+                section.lock_time >
+                  time.quasi_static_end_time * (1. + 1e-12))
+              throw InputError(path + "/Lock time",
+                               "must lie in (0, Time integration/Quasi-"
+                               "static end time = " +
+                                 Utilities::to_string(
+                                   time.quasi_static_end_time) +
+                                 "], not " + prm.get("Lock time"));
+            prm.leave_subsection();
+            m.pretension_sections.push_back(section);
+          }
+        prm.leave_subsection();
+      }
     } // namespace
 
 
@@ -453,6 +602,8 @@ namespace rubberdyn
           prm.leave_subsection();
         }
       prm.leave_subsection();
+
+      declare_pretension_sections(prm, names);
     }
 
 
@@ -796,12 +947,13 @@ namespace rubberdyn
         }
       prm.leave_subsection();
 
+      parse_pretension_sections(prm, time_integration, m);
+
       m.setup();
       if (time_integration.scheme == "quasi-static then explicit")
-        throw InputError("Time integration/Scheme",
-                         "'quasi-static then explicit' is not implemented "
-                         "yet; use 'quasi-static' or 'explicit'");
-      if (time_integration.scheme == "quasi-static")
+        preloaded = std::make_unique<model::PreloadedSimulation>(
+          m, time_integration, output, "Model", model_parameters);
+      else if (time_integration.scheme == "quasi-static")
         quasi_static = std::make_unique<model::QuasiStaticSimulation>(
           m, time_integration, output, "Model");
       else
@@ -821,7 +973,9 @@ namespace rubberdyn
     void
     ModelStudy::run(std::ostream &log)
     {
-      if (quasi_static)
+      if (preloaded)
+        preloaded->run(log);
+      else if (quasi_static)
         quasi_static->run(log);
       else
         simulation->run(log);
@@ -832,7 +986,9 @@ namespace rubberdyn
     void
     ModelStudy::check(std::ostream &log)
     {
-      if (quasi_static)
+      if (preloaded)
+        preloaded->check(log);
+      else if (quasi_static)
         quasi_static->check(log);
       else
         simulation->check(log);

@@ -240,6 +240,18 @@ namespace rubberdyn
 
 
     void
+    ExplicitSolver::set_initial_displacement(const VectorType &displacement)
+    {
+      AssertThrow(!started,
+                  ExcMessage("initial displacement after the start"));
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        u.local_element(i) = displacement.local_element(i);
+      u.update_ghost_values();
+    }
+
+
+
+    void
     ExplicitSolver::set_group_masses(const std::vector<VectorType> &group_mass)
     {
       AssertThrow(group_mass.size() == settings.n_groups,
@@ -909,6 +921,10 @@ namespace rubberdyn
 
           energy.kinetic  = sums[0];
           energy.internal = sums[1];
+          // A run that starts deformed (a preloaded state handed over from
+          // the quasi-static solver) starts with its stored energy.
+          if (!started)
+            energy.initial += energy.internal;
           energy.contact  = sums[2];
           // The viscous forces at t_n act on [t_{n-1/2}, t_{n+1/2}]: the
           // half on [t_n, t_{n+1/2}] belongs to the energies at t_{n+1}, as

@@ -23,6 +23,7 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -61,7 +62,8 @@ namespace rubberdyn
         const KinematicConstraints                               &constraints,
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
-        const MPI_Comm                                            comm);
+        const MPI_Comm                                            comm,
+        const std::vector<PretensionLoad>                        &sections);
 
       /** What one residual evaluation gives. */
       struct Residual
@@ -81,13 +83,34 @@ namespace rubberdyn
         double              free_norm = 0., reaction_norm = 0., load_norm = 0.;
         double              energy = 0.;
         std::vector<double> energy_by_group;
+        /**
+         * Force across each pretension section (kN, all ranks), and the
+         * residual N_s - F_s(t) of the force-controlled ones (0 for the
+         * others).
+         */
+        std::vector<double> section_force, section_residual;
       };
 
       /**
-       * f_int(u) - f_ext(t) and its norms; u must have its ghosts updated.
+       * The state of the pretension sections in one load step to @p t:
+       * which are force-controlled (unknown shortening) and their target
+       * force, and the prescribed shortening of the others given their
+       * shortenings @p shortening at the start of the step (held: locked).
        */
       void
-      evaluate(const VectorType &u, const double t, Residual &r);
+      set_section_targets(const double               t,
+                          const std::vector<double> &shortening,
+                          std::vector<double>       &prescribed);
+
+      /**
+       * f_int(u, delta) - f_ext(t) and its norms, with the section
+       * shortenings @p delta; u must have its ghosts updated.
+       */
+      void
+      evaluate(const VectorType          &u,
+               const std::vector<double> &delta,
+               const double               t,
+               Residual                  &r);
 
       /**
        * Assemble the tangent at @p u and the right-hand side -r on the free
@@ -106,16 +129,26 @@ namespace rubberdyn
       symmetric() const;
 
       /**
-       * Solve the assembled system; the correction goes to @p du (owned
-       * entries, constrained dofs set to @p increment if @p predictor, else
+       * Solve the assembled (bordered) system; the correction goes to
+       * @p du (owned entries, constrained dofs set to @p increment if
+       * @p predictor, else zero) and the sections' to @p d_delta (the
+       * prescribed ones get @p delta_increment if @p predictor, else
        * zero). Returns the linear iterations (0 for the direct solver).
        */
       unsigned int
-      solve(VectorType &du, const VectorType &increment, const bool predictor);
+      solve(VectorType                &du,
+            std::vector<double>       &d_delta,
+            const VectorType          &increment,
+            const std::vector<double> &delta_increment,
+            const bool                 predictor);
 
-      /** |du . rhs| over the free dofs (all ranks). */
+      /**
+       * |du . rhs| over the free dofs and the force-controlled sections
+       * (all ranks).
+       */
       double
-      energy_increment(const VectorType &du) const;
+      energy_increment(const VectorType          &du,
+                       const std::vector<double> &d_delta) const;
 
       const DoFHandler<3, 3>                            &dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
@@ -141,6 +174,18 @@ namespace rubberdyn
       /** What the contributions see besides u and t: no velocity, no mass. */
       VectorType                    zero;
       std::vector<model::RigidBody> no_bodies;
+
+      /** The pretension sections' loads. */
+      std::vector<PretensionLoad> sections;
+      /** In the current step: force-controlled, and the target (kN). */
+      std::vector<bool>   section_unknown;
+      std::vector<double> section_target;
+      /**
+       * From the last assemble(): k_s = K g_s, k^_s = K^T g_s (ghosted,
+       * compressed), kappa_s = g_s^T K g_s, and -r_s.
+       */
+      std::vector<VectorType> section_column, section_row;
+      std::vector<double>     section_diagonal, section_rhs;
     };
 
 
@@ -152,7 +197,8 @@ namespace rubberdyn
       const KinematicConstraints                               &constraints,
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
-      const MPI_Comm                                            comm)
+      const MPI_Comm                                            comm,
+      const std::vector<PretensionLoad>                        &sections)
       : dof_handler(dof_handler)
       , partitioner(partitioner)
       , elements(elements)
@@ -160,7 +206,25 @@ namespace rubberdyn
       , loads(loads)
       , settings(settings)
       , comm(comm)
+      , sections(sections)
+      , section_unknown(sections.size(), false)
+      , section_target(sections.size(), 0.)
+      , section_column(sections.size())
+      , section_row(sections.size())
+      , section_diagonal(sections.size(), 0.)
+      , section_rhs(sections.size(), 0.)
     {
+      AssertThrow(sections.size() == elements.n_sections(),
+                  ExcMessage("The quasi-static solver got " +
+                             std::to_string(sections.size()) +
+                             " pretension loads for " +
+                             std::to_string(elements.n_sections()) +
+                             " sections of the elements"));
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        {
+          section_column[s].reinit(partitioner);
+          section_row[s].reinit(partitioner);
+        }
       for (const model::ForceContribution *load : loads)
         AssertThrow(load->supports_implicit(),
                     ExcMessage("The quasi-static solver cannot use the "
@@ -257,10 +321,37 @@ namespace rubberdyn
 
 
     void
-    QuasiStaticSolver::Implementation::evaluate(const VectorType &u,
-                                                const double      t,
-                                                Residual         &r)
+    QuasiStaticSolver::Implementation::set_section_targets(
+      const double               t,
+      const std::vector<double> &shortening,
+      std::vector<double>       &prescribed)
     {
+      prescribed.assign(sections.size(), 0.);
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        {
+          const PretensionLoad &load = sections[s];
+          const double          ramp = std::min(t / load.lock_time, 1.);
+          section_unknown[s] =
+            load.force_control && t <= load.lock_time * (1. + 1e-12);
+          section_target[s] = section_unknown[s] ? load.target_force * ramp : 0.;
+          // A locked force-controlled section keeps its shortening.
+          prescribed[s] = section_unknown[s] ? 0. :
+                          load.force_control ? shortening[s] :
+                                               load.shortening * ramp;
+        }
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::evaluate(
+      const VectorType          &u,
+      const std::vector<double> &delta,
+      const double               t,
+      Residual                  &r)
+    {
+      if (!sections.empty())
+        elements.set_section_shortenings(delta);
       r.force.reinit(partitioner);
       elements::ElementStepResult result;
       elements.compute_residual(u, r.force, result);
@@ -305,6 +396,23 @@ namespace rubberdyn
       Utilities::MPI::sum(ArrayView<const double>(sums, 3),
                           comm,
                           ArrayView<double>(sums, 3));
+      // The sections: a force-controlled one's residual is free, its
+      // target a load; a held one's force is a reaction.
+      r.section_force = result.section_force;
+      r.section_force.resize(sections.size(), 0.);
+      Utilities::MPI::sum(ArrayView<const double>(r.section_force),
+                          comm,
+                          ArrayView<double>(r.section_force));
+      r.section_residual.assign(sections.size(), 0.);
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        if (section_unknown[s])
+          {
+            r.section_residual[s] = r.section_force[s] - section_target[s];
+            sums[0] += std::pow(r.section_residual[s], 2);
+            sums[2] += std::pow(section_target[s], 2);
+          }
+        else
+          sums[1] += std::pow(r.section_force[s], 2);
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
       r.load_norm     = std::sqrt(sums[2]);
@@ -422,26 +530,66 @@ namespace rubberdyn
       rhs.add(indices, values);
       matrix.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
+
+      // The sections' border: k_s = K g_s, k^_s = K^T g_s, kappa_s.
+      if (!sections.empty())
+        {
+          for (unsigned int s = 0; s < sections.size(); ++s)
+            {
+              section_column[s] = 0.;
+              section_row[s]    = 0.;
+              section_diagonal[s] = 0.;
+              section_rhs[s]      = -r.section_residual[s];
+            }
+          elements.compute_section_couplings(
+            u,
+            [&](const unsigned int *dofs,
+                const unsigned int  s,
+                const double       *K_g,
+                const double       *KT_g,
+                const double        gKg) {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  section_column[s].local_element(dofs[i]) += K_g[i];
+                  section_row[s].local_element(dofs[i]) += KT_g[i];
+                }
+              section_diagonal[s] += gKg;
+            });
+          for (unsigned int s = 0; s < sections.size(); ++s)
+            {
+              section_column[s].compress(VectorOperation::add);
+              section_row[s].compress(VectorOperation::add);
+            }
+          Utilities::MPI::sum(ArrayView<const double>(section_diagonal),
+                              comm,
+                              ArrayView<double>(section_diagonal));
+        }
     }
 
 
 
     unsigned int
-    QuasiStaticSolver::Implementation::solve(VectorType       &du,
-                                             const VectorType &increment,
-                                             const bool        predictor)
+    QuasiStaticSolver::Implementation::solve(
+      VectorType                &du,
+      std::vector<double>       &d_delta,
+      const VectorType          &increment,
+      const std::vector<double> &delta_increment,
+      const bool                 predictor)
     {
-      solution            = 0.;
-      unsigned int n_iter = 0;
+      // One factorisation (or preconditioner) of K for every right-hand
+      // side: -r, then each section's k_s.
+      std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+      SolverControl                                   direct_control(1, 0.);
       if (use_direct)
         {
-          SolverControl                                  control(1, 0.);
-          TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                              "Amesos_Klu");
-          TrilinosWrappers::SolverDirect                 direct(control, data);
-          direct.solve(matrix, solution, rhs);
+          TrilinosWrappers::SolverDirect::AdditionalData data(
+            false, settings.direct_solver);
+          direct =
+            std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
+                                                             data);
+          direct->initialize(matrix);
         }
-      else if (rhs.l2_norm() > 0.)
+      else
         {
           // ML with the six rigid-body modes as its near-null space: the
           // AdditionalData's list, then the modes by hand (deal.II 9.4's
@@ -459,39 +607,122 @@ namespace rubberdyn
           list.set("null space: vectors", rigid_body_modes.data());
           amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
           amg->initialize(matrix.trilinos_matrix(), list);
-          SolverControl control(10000,
-                                settings.linear_tolerance * rhs.l2_norm());
-          // CG where the tangent is symmetric (hyperelastic laws: the
-          // element force is an energy gradient), GMRES otherwise, and
-          // GMRES also when CG breaks down: away from equilibrium (a large
-          // predictor, buckling) the symmetric tangent can be indefinite.
-          const auto gmres = [&]() {
-            solution = 0.;
-            TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false,
-                                                                     200);
-            TrilinosWrappers::SolverGMRES solver(control, gmres_data);
-            solver.solve(matrix, solution, rhs, *amg);
-            return control.last_step();
-          };
-          if (!symmetric())
-            n_iter = gmres();
-          else
-            try
-              {
-                TrilinosWrappers::SolverCG cg(control);
-                cg.solve(matrix, solution, rhs, *amg);
-                n_iter = control.last_step();
-              }
-            catch (const std::exception &)
-              {
-                const unsigned int cg_iterations = control.last_step();
-                n_iter                           = cg_iterations + gmres();
-              }
         }
-      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      const auto linear_solve = [&](TrilinosWrappers::MPI::Vector       &x,
+                                    const TrilinosWrappers::MPI::Vector &b) {
+        x = 0.;
+        if (use_direct)
+          {
+            direct->solve(x, b);
+            return 0u;
+          }
+        if (b.l2_norm() == 0.)
+          return 0u;
+        SolverControl control(10000, settings.linear_tolerance * b.l2_norm());
+        // CG where the tangent is symmetric (hyperelastic laws: the
+        // element force is an energy gradient), GMRES otherwise, and
+        // GMRES also when CG breaks down: away from equilibrium (a large
+        // predictor, buckling) the symmetric tangent can be indefinite.
+        const auto gmres = [&]() {
+          x = 0.;
+          TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
+          TrilinosWrappers::SolverGMRES solver(control, gmres_data);
+          solver.solve(matrix, x, b, *amg);
+          return control.last_step();
+        };
+        if (!symmetric())
+          return gmres();
+        try
+          {
+            TrilinosWrappers::SolverCG cg(control);
+            cg.solve(matrix, x, b, *amg);
+            return control.last_step();
+          }
+        catch (const std::exception &)
+          {
+            const unsigned int cg_iterations = control.last_step();
+            return cg_iterations + gmres();
+          }
+      };
+      unsigned int n_iter = linear_solve(solution, rhs);
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      // a: the correction without the sections' (prescribed increments on
+      // the constrained dofs).
+      for (unsigned int i = 0; i < n_owned; ++i)
         du.local_element(i) = constrained[i] ?
                                 (predictor ? increment.local_element(i) : 0.) :
                                 solution[partitioner->local_to_global(i)];
+      const unsigned int n_sections = sections.size();
+      d_delta.assign(n_sections, 0.);
+      if (n_sections == 0)
+        return n_iter;
+
+      // b_s = K^{-1} k_s on the free dofs (zero on the constrained ones).
+      std::vector<VectorType>       b(n_sections);
+      TrilinosWrappers::MPI::Vector column(rhs), b_s(rhs);
+      for (unsigned int s = 0; s < n_sections; ++s)
+        {
+          std::vector<types::global_dof_index> indices;
+          std::vector<double>                  values;
+          column = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!constrained[i])
+              {
+                indices.push_back(partitioner->local_to_global(i));
+                values.push_back(section_column[s].local_element(i));
+              }
+          column.set(indices, values);
+          column.compress(VectorOperation::insert);
+          n_iter += linear_solve(b_s, column);
+          b[s].reinit(partitioner);
+          for (unsigned int i = 0; i < n_owned; ++i)
+            b[s].local_element(i) =
+              constrained[i] ? 0. : b_s[partitioner->local_to_global(i)];
+        }
+      // The prescribed shortening increments, then the force-controlled
+      // ones from k^_s . (a - sum_t b_t dd_t) + kappa_s dd_s = -r_s.
+      std::vector<unsigned int> unknown;
+      for (unsigned int s = 0; s < n_sections; ++s)
+        if (section_unknown[s])
+          unknown.push_back(s);
+        else
+          d_delta[s] = predictor ? delta_increment[s] : 0.;
+      const auto dot = [&](const VectorType &x, const VectorType &y) {
+        double sum = 0.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          sum += x.local_element(i) * y.local_element(i);
+        return Utilities::MPI::sum(sum, comm);
+      };
+      if (!unknown.empty())
+        {
+          const unsigned int m = unknown.size();
+          FullMatrix<double> schur(m, m);
+          Vector<double>     right(m), dd(m);
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              const unsigned int s = unknown[i];
+              right(i) = section_rhs[s] - dot(section_row[s], du);
+              for (unsigned int t = 0; t < n_sections; ++t)
+                {
+                  const double entry =
+                    (s == t ? section_diagonal[s] : 0.) -
+                    dot(section_row[s], b[t]);
+                  if (section_unknown[t])
+                    schur(i,
+                          std::find(unknown.begin(), unknown.end(), t) -
+                            unknown.begin()) = entry;
+                  else
+                    right(i) -= entry * d_delta[t];
+                }
+            }
+          schur.gauss_jordan();
+          schur.vmult(dd, right);
+          for (unsigned int i = 0; i < m; ++i)
+            d_delta[unknown[i]] = dd(i);
+        }
+      for (unsigned int s = 0; s < n_sections; ++s)
+        if (d_delta[s] != 0.)
+          du.add(-d_delta[s], b[s]);
       return n_iter;
     }
 
@@ -499,13 +730,27 @@ namespace rubberdyn
 
     double
     QuasiStaticSolver::Implementation::energy_increment(
-      const VectorType &du) const
+      const VectorType          &du,
+      const std::vector<double> &d_delta) const
     {
+      // The right-hand side the free dofs saw, with the prescribed
+      // shortening increments' share -k_t dd_t (the load of a predictor
+      // whose only driver is a section: without it the first energy is 0).
       double sum = 0.;
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
         if (!constrained[i])
-          sum += du.local_element(i) * rhs[partitioner->local_to_global(i)];
-      return std::abs(Utilities::MPI::sum(sum, comm));
+          {
+            double right = rhs[partitioner->local_to_global(i)];
+            for (unsigned int t = 0; t < sections.size(); ++t)
+              if (!section_unknown[t])
+                right -= section_column[t].local_element(i) * d_delta[t];
+            sum += du.local_element(i) * right;
+          }
+      sum = Utilities::MPI::sum(sum, comm);
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        if (section_unknown[s])
+          sum += d_delta[s] * section_rhs[s];
+      return std::abs(sum);
     }
 
 
@@ -517,14 +762,18 @@ namespace rubberdyn
       const KinematicConstraints                               &constraints,
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
-      const MPI_Comm                                            comm)
+      const MPI_Comm                                            comm,
+      const std::vector<PretensionLoad>                        &sections)
       : impl(std::make_unique<Implementation>(dof_handler,
                                               partitioner,
                                               elements,
                                               constraints,
                                               loads,
                                               settings,
-                                              comm))
+                                              comm,
+                                              sections))
+      , section_force(sections.size(), 0.)
+      , shortening(sections.size(), 0.)
     {
       u.reinit(partitioner);
     }
@@ -539,7 +788,7 @@ namespace rubberdyn
     QuasiStaticSolver::linear_solver_name() const
     {
       return impl->use_direct ?
-               "direct (Amesos KLU)" :
+               "direct (" + impl->settings.direct_solver + ")" :
                std::string(impl->symmetric() ? "CG" : "GMRES") +
                  " with ML AMG (6 rigid-body modes)";
     }
@@ -551,7 +800,9 @@ namespace rubberdyn
     {
       u.update_ghost_values();
       Implementation::Residual r;
-      impl->evaluate(u, current_time, r);
+      std::vector<double>      unused;
+      impl->set_section_targets(current_time, shortening, unused);
+      impl->evaluate(u, shortening, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +
@@ -583,6 +834,7 @@ namespace rubberdyn
           m[d] = Utilities::MPI::sum(m[d], impl->comm);
       energy          = r.energy;
       energy_by_group = r.energy_by_group;
+      section_force   = r.section_force;
     }
 
 
@@ -607,14 +859,23 @@ namespace rubberdyn
       // cut-back); u_trial the line search's candidate.
       VectorType               u_start(u), u_trial(u), du(u), increment(u);
       Implementation::Residual r, r_trial;
+      // The same for the sections' shortenings.
+      std::vector<double> delta_start, delta_trial, d_delta, delta_increment,
+        prescribed;
       double                   step = std::min(s.initial_step, s.maximum_step);
       unsigned int             cutbacks = 0;
       while (current_time < end_time * (1. - 1e-12))
         {
-          step = std::min(step, end_time - current_time);
-          // Snap a last sliver onto the end time.
-          if (end_time - (current_time + step) < 1e-3 * step)
-            step = end_time - current_time;
+          // Never step over a lock time: the section's target is reached
+          // there, and then held.
+          double stop = end_time;
+          for (const PretensionLoad &section : I.sections)
+            if (current_time < section.lock_time * (1. - 1e-12))
+              stop = std::min(stop, section.lock_time);
+          step = std::min(step, stop - current_time);
+          // Snap a last sliver onto the end time (or the lock time).
+          if (stop - (current_time + step) < 1e-3 * step)
+            step = stop - current_time;
           const double t_new = current_time + step;
           if (root)
             log << "  Step to t = " << short_number(t_new, 6) << " (dt "
@@ -634,7 +895,14 @@ namespace rubberdyn
           increment.update_ghost_values();
           u_start = u;
           u.update_ghost_values();
-          I.evaluate(u, t_new, r);
+          // The sections: targets at t_new, prescribed increments.
+          delta_start = shortening;
+          I.set_section_targets(t_new, shortening, prescribed);
+          delta_increment.assign(shortening.size(), 0.);
+          for (unsigned int s = 0; s < shortening.size(); ++s)
+            if (!I.section_unknown[s])
+              delta_increment[s] = prescribed[s] - shortening[s];
+          I.evaluate(u, shortening, t_new, r);
           std::string  reason;
           bool         converged    = false;
           double       first_energy = 0.;
@@ -647,7 +915,8 @@ namespace rubberdyn
               try
                 {
                   I.assemble(u, t_new, r, increment, predictor);
-                  n_linear = I.solve(du, increment, predictor);
+                  n_linear = I.solve(
+                    du, d_delta, increment, delta_increment, predictor);
                 }
               catch (const std::exception &e)
                 {
@@ -659,7 +928,7 @@ namespace rubberdyn
                   break;
                 }
               linear_total += n_linear;
-              const double energy_increment = I.energy_increment(du);
+              const double energy_increment = I.energy_increment(du, d_delta);
               if (predictor)
                 first_energy = energy_increment;
 
@@ -680,7 +949,11 @@ namespace rubberdyn
                       u.local_element(i) +
                       (I.constrained[i] ? 1. : alpha) * du.local_element(i);
                   u_trial.update_ghost_values();
-                  I.evaluate(u_trial, t_new, r_trial);
+                  delta_trial = shortening;
+                  for (unsigned int s = 0; s < shortening.size(); ++s)
+                    delta_trial[s] +=
+                      (I.section_unknown[s] ? alpha : 1.) * d_delta[s];
+                  I.evaluate(u_trial, delta_trial, t_new, r_trial);
                   if (!r_trial.failed &&
                       (predictor || !s.line_search || trial == 6 ||
                        r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
@@ -699,6 +972,7 @@ namespace rubberdyn
                 }
               u.swap(u_trial);
               std::swap(r, r_trial);
+              shortening.swap(delta_trial);
 
               const double scale =
                 std::max({r.reaction_norm, r.load_norm, s.residual_floor});
@@ -750,6 +1024,7 @@ namespace rubberdyn
               // Back to the last converged state, and halve.
               u = u_start;
               u.update_ghost_values();
+              shortening = delta_start;
               ++cutbacks;
               if (root)
                 log << "  Cut back: " << reason << std::endl;

@@ -509,6 +509,31 @@ main()
     check(shared == 0, "the rigid block is a separate body");
   }
   {
+    // The bolted joint: 24-gons of circumradius R (area A(R) =
+    // 12 R^2 sin(pi/12), perimeter P(R) = 48 R sin(pi/24)); the bolt is
+    // the shank (R = 8, z from 0 to 20), head (R = 12, 10 high) and nut
+    // (R = 12, 13 high), each plate an annulus 8.5 < R < 30, 10 thick.
+    const auto A = [pi](const double R) {
+      return 12. * R * R * std::sin(pi / 12.);
+    };
+    const auto P = [pi](const double R) {
+      return 48. * R * std::sin(pi / 24.);
+    };
+    Triangulation<3> tria;
+    read_good(tria, mesh_directory + "bolted_plates.msh");
+    summarize(tria,
+              "bolted_plates.msh",
+              {{1, A(8.) * 20. + A(12.) * 23.},
+               {2, (A(30.) - A(8.5)) * 10.},
+               {3, (A(30.) - A(8.5)) * 10.}},
+              {{1, A(30.) - A(12.)},
+               {2, A(30.) - A(12.)},
+               {3,
+                2. * A(12.) + P(12.) * 23. + P(8.) * 20. +
+                  2. * (A(8.5) - A(8.))},
+               {4, (P(30.) + P(8.5)) * 20.}});
+  }
+  {
     const double     r = 12.5, h = 24.;
     Triangulation<3> tria;
     read_good(tria, mesh_directory + "drop_test_cylinder.msh");

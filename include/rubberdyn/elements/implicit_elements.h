@@ -4,6 +4,7 @@
 #include <rubberdyn/base/vector.h>
 
 #include <functional>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -63,6 +64,45 @@ namespace rubberdyn
         const VectorType &u,
         const std::function<void(const unsigned int *dofs, const double *K)>
           &add) const = 0;
+
+      /**
+       * Number of pretension sections cutting the elements (0 if the
+       * elements do not take sections). A section s shortens the elements it
+       * cuts by its shortening $\delta_s$ (mm): their nodes on the positive
+       * side of its plane are seen displaced by $\delta_s n$ (doc/theory.md,
+       * section 12), and its force $N_s = \partial \Pi / \partial
+       * \delta_s$ is reported in ElementStepResult::section_force.
+       */
+      virtual unsigned int
+      n_sections() const
+      {
+        return 0;
+      }
+
+      /**
+       * Set the shortening of every section (mm), used by the following
+       * evaluations.
+       */
+      virtual void
+      set_section_shortenings(const std::vector<double> &shortenings);
+
+      /**
+       * The coupling of the section shortenings with the dofs, for Newton's
+       * method: @p add is called once per locally owned element that a
+       * section cuts, with its dof indices (as in compute_tangents()), its
+       * section, the columns $K g$ and rows $K^T g$ of the element tangent
+       * along the element's unit offset g (the derivative of the element
+       * force with respect to the shortening, and of the section force with
+       * respect to the dofs; kN/mm), and $g^T K g$ (kN/mm).
+       */
+      virtual void
+      compute_section_couplings(
+        const VectorType &u,
+        const std::function<void(const unsigned int *dofs,
+                                 const unsigned int  section,
+                                 const double       *K_g,
+                                 const double       *KT_g,
+                                 const double        gKg)> &add) const;
 
       /** Whether a law keeps a history (its tangent is then not symmetric). */
       virtual bool

@@ -175,6 +175,28 @@ namespace rubberdyn
       double min_volume_ratio = 1.;
       /** Set if an element failed (the first one in element order). */
       ElementFailure failure;
+      /**
+       * Force across each pretension section from this rank's elements
+       * (kN, positive in tension; the caller sums over the ranks):
+       * $N_s = \sum_e g_e \cdot f_e$ over the elements it cuts, the
+       * derivative of the stored energy with respect to the section's
+       * shortening (ImplicitElements::n_sections()).
+       */
+      std::vector<double> section_force;
+    };
+
+    /**
+     * The plane of a pretension section and the element group (part) it
+     * cuts (SolidHexElements::cut_sections()).
+     */
+    struct SectionPlane
+    {
+      /** A point of the plane (mm). */
+      Point<3> point;
+      /** Its unit normal; the nodes on its side are the offset ones. */
+      Tensor<1, 3> normal;
+      /** The element group whose elements it cuts. */
+      unsigned int group = 0;
     };
 
     /** Formulation of the solid element. */
@@ -403,6 +425,61 @@ namespace rubberdyn
       void
       accept_history() override;
 
+      /**
+       * Let pretension sections cut the elements (after initialize(); once).
+       * Section s cuts the elements of its group that have nodes strictly on
+       * both sides of its plane (signed distances beyond 1e-9 of the
+       * element size); their nodes on the positive side get the unit offset
+       * $g = n$, the others none. With a shortening $\delta_s$
+       * (set_section_shortenings()) an element then sees its positive nodes
+       * at $u_a + \delta_s n$: the cut layer is the stress-free length
+       * shorter by $\delta_s$ across the section, and the force through it
+       * is $N_s = \partial\Pi/\partial\delta_s = \sum_e g_e\cdot f_e$
+       * (doc/theory.md, section 12). Elements without a cut are evaluated as
+       * before, at no cost.
+       *
+       * @return The number of this rank's elements each section cuts (the
+       *   caller sums over the ranks and refuses a section that cuts none).
+       * @throw std::invalid_argument if an element is cut by two sections.
+       */
+      std::vector<unsigned int>
+      cut_sections(const std::vector<SectionPlane> &sections);
+
+      unsigned int
+      n_sections() const override
+      {
+        return shortenings.size();
+      }
+
+      void
+      set_section_shortenings(const std::vector<double> &shortenings) override;
+
+      /**
+       * The force through each section (kN, this rank's elements; the
+       * caller sums over the ranks) at displacement @p u (ghosted), without
+       * bulk viscosity, with the accepted history: what compute_forces()
+       * reports in ElementStepResult::section_force at zero velocity,
+       * evaluating the cut elements only (for output).
+       */
+      std::vector<double>
+      section_forces(const VectorType &u) const;
+
+      /** The current shortenings (mm). */
+      const std::vector<double> &
+      section_shortenings() const
+      {
+        return shortenings;
+      }
+
+      void
+      compute_section_couplings(
+        const VectorType &u,
+        const std::function<void(const unsigned int *dofs,
+                                 const unsigned int  section,
+                                 const double       *K_g,
+                                 const double       *KT_g,
+                                 const double        gKg)> &add) const override;
+
       /** Cell averages of the Gauss-point values, for output. */
       struct CellAverages
       {
@@ -427,6 +504,13 @@ namespace rubberdyn
       /** The history of all Gauss points, for checkpoints. */
       std::vector<double> &
       history();
+
+      /** The same, read-only. */
+      const std::vector<double> &
+      history() const
+      {
+        return history_old;
+      }
 
     private:
       static constexpr unsigned int n_nodes = internal::n_nodes;
@@ -456,6 +540,40 @@ namespace rubberdyn
         /** kappa = beta K of the F-bar stabilisation (GPa); 0: none. */
         double stabilization_modulus;
       };
+
+      /**
+       * The exact tangent of element @p element (24 x 24, row-major, rows
+       * 3 a + i) at @p u with its section offset, and its dof indices.
+       */
+      void
+      element_tangent(const unsigned int element,
+                      const double      *u,
+                      unsigned int      *dofs,
+                      double            *K) const;
+
+      /**
+       * The offsets of the nodes of block @p block (mm, [node][component]
+       * [lane]) with the current shortenings; false if no section cuts it.
+       */
+      bool
+      block_offsets(const unsigned int block,
+                    double offsets[internal::n_nodes][3][internal::lanes]) const;
+
+      /** The elements of one block that sections cut. */
+      struct SectionCut
+      {
+        /** The block. */
+        unsigned int block;
+        /** Section of each lane (numbers::invalid_unsigned_int: none). */
+        unsigned int section[internal::lanes];
+        /** Unit offset g of each node, [node][component][lane]. */
+        double direction[internal::n_nodes][3][internal::lanes];
+      };
+      /** Index into `cuts` of each block's cut, invalid if none. */
+      std::vector<unsigned int> cut_of_block;
+      std::vector<SectionCut>   cuts;
+      /** Shortening of each section (mm). */
+      std::vector<double> shortenings;
 
       internal::ReferenceShapes       reference;
       std::vector<internal::HexBlock> blocks;

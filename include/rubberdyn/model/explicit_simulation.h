@@ -3,6 +3,7 @@
 
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/model/preload.h>
 #include <rubberdyn/parameters/contact_parameters.h>
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
@@ -97,6 +98,23 @@ namespace rubberdyn
        */
       void
       run(std::ostream &log);
+
+      /**
+       * Start from a preloaded state (before run()): its displacement, the
+       * elements' history and the pretension sections' shortenings (held
+       * for the whole run), with zero velocity apart from the parts'
+       * initial velocities.
+       */
+      void
+      start_from(const PreloadState &state);
+
+      /**
+       * Read the preload checkpoint in @p directory for this model
+       * (model::read_preload() with the elements' sizes).
+       */
+      PreloadState
+      read_preload(const std::string &directory,
+                   const std::string &parameters) const;
 
       /** The solver (after construction). */
       const time_integration::ExplicitSolver &

@@ -136,6 +136,33 @@ namespace rubberdyn
     };
 
     /**
+     * A bolt pretension section (`Pretension sections/<name>`): a plane
+     * across a part, usually a bolt's shank. The elements of the part that
+     * the plane cuts carry the section's shortening, driven to a target
+     * force (or a prescribed shortening) on the quasi-static load path and
+     * held from the lock time on (doc/theory.md, section 12).
+     */
+    struct PretensionSection
+    {
+      /** Name (the columns `<name>_force`, `<name>_shortening`). */
+      std::string name;
+      /** Index of the part it cuts. */
+      unsigned int part = 0;
+      /** A point of the plane (mm). */
+      Point<3> point;
+      /** Unit normal of the plane (the bolt's axis; either sense). */
+      Tensor<1, 3> normal;
+      /** Force control (else a prescribed shortening). */
+      bool force_control = true;
+      /** Target force (kN, > 0) at the lock time, force control. */
+      double target_force = 0.;
+      /** Shortening (mm) at the lock time, shortening control. */
+      double shortening = 0.;
+      /** Pseudo-time at which the target is reached and the section locked. */
+      double lock_time = 1.;
+    };
+
+    /**
      * The complete model, distributed over the ranks of its communicator.
      */
     class Model
@@ -190,6 +217,7 @@ namespace rubberdyn
       std::vector<Part>                   parts;
       std::vector<BoundaryCondition>      boundary_conditions;
       std::vector<RigidSurfaceDefinition> rigid_surfaces;
+      std::vector<PretensionSection>      pretension_sections;
 
     private:
       /** Set by setup(): the dofs are fe_quadratic's. */

@@ -3,6 +3,8 @@
 
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
+#include <rubberdyn/model/preload.h>
+#include <rubberdyn/time_integration/quasi_static_solver.h>
 
 #include <iosfwd>
 #include <memory>
@@ -14,7 +16,8 @@ namespace rubberdyn
   namespace elements
   {
     class ImplicitElements;
-  }
+    class SolidHexElements;
+  } // namespace elements
   namespace postprocess
   {
     class HistoryNodes;
@@ -79,6 +82,14 @@ namespace rubberdyn
                       const parameters::TimeIntegration &time_integration,
                       const parameters::Output          &output);
 
+      /**
+       * The converged state for the explicit run of `quasi-static then
+       * explicit` (after run()): displacement, history, section
+       * shortenings and forces.
+       */
+      PreloadState
+      preload_state() const;
+
       /** Log the model and the solver settings without running: `--check`. */
       void
       check(std::ostream &log);
@@ -103,6 +114,17 @@ namespace rubberdyn
       void
       log_model(std::ostream &log) const;
 
+      /**
+       * Let the model's pretension sections cut @p hexes and set
+       * pretension_loads and cut_elements.
+       *
+       * @throws InputError naming `Pretension sections/<name>/Point` for a
+       *   section that cuts no element, or `Pretension sections/Names` for
+       *   an element cut by two.
+       */
+      void
+      cut_pretension_sections(elements::SolidHexElements &hexes);
+
       Model                                                  &model;
       parameters::TimeIntegration                             time_integration;
       parameters::Output                                      output;
@@ -116,6 +138,9 @@ namespace rubberdyn
       std::vector<unsigned int> condition_of_group, direction_of_group;
       /** Boundary condition of each of the surface loads. */
       std::vector<unsigned int> condition_of_load;
+      /** How each pretension section is loaded, and its cut elements. */
+      std::vector<time_integration::PretensionLoad> pretension_loads;
+      std::vector<unsigned int>                     cut_elements;
     };
   } // namespace model
 } // namespace rubberdyn

@@ -56,6 +56,19 @@ namespace rubberdyn
         std::vector<unsigned int>              &direction_of_group);
 
       /**
+       * Let the model's pretension sections cut @p hexes (one element
+       * group per part, in the parts' order: element_groups()). Returns the
+       * number of elements each cuts (all ranks). Collective.
+       *
+       * @throws InputError naming `Pretension sections/<name>/Point` for a
+       *   section that cuts no element, or `Pretension sections/Names` for
+       *   an element cut by two.
+       */
+      std::vector<unsigned int>
+      cut_pretension_sections(const Model                &model,
+                              elements::SolidHexElements &hexes);
+
+      /**
        * One SurfaceLoads contribution for all the pressure and traction
        * conditions of the model, or nullptr if there is none. Appends to
        * @p condition_of_load the condition of each of its loads.

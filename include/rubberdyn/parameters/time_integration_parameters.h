@@ -34,7 +34,7 @@ namespace rubberdyn
       {
         /** direct below direct_solver_limit dofs, AMG above. */
         automatic,
-        /** Trilinos Amesos KLU (sparse LU). */
+        /** Trilinos Amesos sparse LU (MUMPS or KLU: direct_solver). */
         direct,
         /** CG or GMRES with Trilinos ML AMG (six rigid-body modes). */
         amg
@@ -60,6 +60,12 @@ namespace rubberdyn
       LinearSolver linear_solver = LinearSolver::automatic;
       /** automatic: the direct solver up to this many dofs. */
       unsigned int direct_solver_limit = 60000;
+      /**
+       * The direct solver's Amesos package: "Amesos_Mumps" (multifrontal,
+       * nested-dissection ordering, distributed) or "Amesos_Klu" (serial
+       * left-looking LU: fine in 2D, slow in 3D).
+       */
+      std::string direct_solver = "Amesos_Mumps";
       /** Relative residual tolerance of the iterative solver. */
       double linear_tolerance = 1e-10;
     };

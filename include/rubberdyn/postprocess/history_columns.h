@@ -105,6 +105,37 @@ namespace rubberdyn
 
 
     /**
+     * Per pretension section (model::PretensionSection; in the explicit run
+     * of `quasi-static then explicit`, locked at its preload):
+     * `<name>_force` (kN, the axial force through it, tension positive:
+     * elements::SolidHexElements::section_forces() at the current
+     * displacement, without bulk viscosity) and `<name>_shortening` (mm,
+     * held), the columns of the quasi-static run.
+     */
+    class PretensionSectionColumns : public Postprocessor
+    {
+    public:
+      std::string
+      name() const override;
+
+      /** The sections' names, in the elements' order of sections. */
+      explicit PretensionSectionColumns(
+        const std::vector<std::string> &section_names);
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      /** Collective: the forces are summed over the ranks. */
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      std::vector<std::string> section_names;
+    };
+
+
+    /**
      * Per rigid body (of a rigid surface, or a rigid part):
      * `<name>_position_x/_y/_z` (mm, of its reference point: a rigid part's
      * centre of mass), `<name>_velocity_x/_y/_z` (mm/ms) and

@@ -12,6 +12,7 @@ namespace rubberdyn
     class Model;
     class ExplicitSimulation;
     class QuasiStaticSimulation;
+    class PreloadedSimulation;
   } // namespace model
 
   namespace studies
@@ -64,9 +65,10 @@ namespace rubberdyn
 
     private:
       std::unique_ptr<model::Model>              model;
-      /** The engine: one of the two, by `Time integration/Scheme`. */
+      /** The engine: one of the three, by `Time integration/Scheme`. */
       std::unique_ptr<model::ExplicitSimulation>    simulation;
       std::unique_ptr<model::QuasiStaticSimulation> quasi_static;
+      std::unique_ptr<model::PreloadedSimulation>   preloaded;
     };
   } // namespace studies
 } // namespace rubberdyn

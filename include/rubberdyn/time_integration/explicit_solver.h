@@ -337,6 +337,15 @@ namespace rubberdyn
       set_initial_velocity(const VectorType &velocity);
 
       /**
+       * Start from the displacement @p displacement (mm; owned entries are
+       * read), e.g. the converged state of a quasi-static preload, instead
+       * of zero. Before the first step only. The energy at the start then
+       * holds the stored energy of that state (EnergyBalance::initial).
+       */
+      void
+      set_initial_displacement(const VectorType &displacement);
+
+      /**
        * Group of each node for the per-group kinetic energy and momentum:
        * @p group_mass[g] is the lumped physical mass of group g per dof
        * (compressed), g < settings.n_groups. A dof with mass in one group

@@ -67,6 +67,31 @@ namespace rubberdyn
     };
 
     /**
+     * How a pretension section is loaded on the load path (its plane and
+     * the elements it cuts are the elements' business:
+     * elements::ImplicitElements::n_sections()). Until the lock time the
+     * section is driven, from then on its shortening is held ("locked"),
+     * as CalculiX's pretension node with a force in one step and
+     * `*BOUNDARY,FIXED` in the next.
+     */
+    struct PretensionLoad
+    {
+      /**
+       * Force control: the shortening is an unknown, and the force across
+       * the section follows target_force t / lock_time (kN) up to the lock
+       * time. Otherwise the shortening is prescribed, shortening
+       * min(t / lock_time, 1) (mm).
+       */
+      bool force_control = true;
+      /** Force at the lock time (kN, > 0: tension). */
+      double target_force = 0.;
+      /** Shortening at the lock time (mm, shortening control). */
+      double shortening = 0.;
+      /** Pseudo-time at which the target is reached and the section locked. */
+      double lock_time = 1.;
+    };
+
+    /**
      * Static equilibrium $f_{int}(u) = f_{ext}$ by Newton-Raphson with load
      * stepping in the pseudo-time t of the boundary-condition functions
      * (Wriggers, Nonlinear Finite Element Methods (2008), sections 5.1 and
@@ -103,7 +128,21 @@ namespace rubberdyn
      * iterations is halved; a step that took at most 4 iterations lets the
      * next grow by 1.5, up to the maximum step. One log line per iteration.
      *
-     * The linear systems: Trilinos Amesos KLU, or CG (hyperelastic laws:
+     * Pretension sections (PretensionLoad) add one unknown each, the
+     * shortening $\delta_s$, with the equation $N_s(u, \delta) = F_s(t)$
+     * while force-controlled, or $\delta_s$ prescribed. The linear system
+     * is bordered: $K \Delta u + \sum_s k_s \Delta\delta_s = -r$,
+     * $\hat k_s \cdot \Delta u + \kappa_s \Delta\delta_s = -r_s$, with
+     * $k_s = K g_s$, $\hat k_s = K^T g_s$ and $\kappa_s = g_s^T K g_s$
+     * from the elements (compute_section_couplings()). It is solved by
+     * block elimination with the factorisation (or the preconditioner) of
+     * K: $K a = -r$, $K b_s = k_s$, a small dense system for the
+     * $\Delta\delta$ of the force-controlled sections, then $\Delta u = a
+     * - \sum_s b_s \Delta\delta_s$ (the bordering algorithm of arc-length
+     * methods; Wriggers 2008, section 7.2). A load step never steps over
+     * a lock time.
+     *
+     * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic laws:
      * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
      * near-null space holds the six rigid-body modes of the nodal
      * coordinates (three translations, three rotations).
@@ -129,7 +168,8 @@ namespace rubberdyn
         const KinematicConstraints                               &constraints,
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
-        const MPI_Comm                                            comm);
+        const MPI_Comm                                            comm,
+        const std::vector<PretensionLoad>                        &sections = {});
 
       ~QuasiStaticSolver();
 
@@ -205,6 +245,23 @@ namespace rubberdyn
         return energy_by_group;
       }
 
+      /**
+       * Force across each pretension section (kN, tension positive, summed
+       * over the ranks) in the last converged state.
+       */
+      const std::vector<double> &
+      section_forces() const
+      {
+        return section_force;
+      }
+
+      /** Shortening of each pretension section (mm), last converged state. */
+      const std::vector<double> &
+      section_shortenings() const
+      {
+        return shortening;
+      }
+
       /** The converged load steps so far. */
       const std::vector<LoadStepRecord> &
       steps() const
@@ -223,6 +280,7 @@ namespace rubberdyn
       double                      energy = 0.;
       std::vector<double>         energy_by_group;
       std::vector<LoadStepRecord> records;
+      std::vector<double>         section_force, shortening;
     };
   } // namespace time_integration
 } // namespace rubberdyn

@@ -1,0 +1,234 @@
+#include <deal.II/base/utilities.h>
+
+#include <rubberdyn/base/binary_io.h>
+#include <rubberdyn/base/durable_files.h>
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/model/preload.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    namespace
+    {
+      constexpr char preload_magic[8] = "RDYNPL1";
+
+      /** The entries only the explicit run reads. */
+      bool
+      explicit_only(const std::string &line)
+      {
+        static const char *const names[] = {"Initial velocity",
+                                            "Initial angular velocity",
+                                            "Density",
+                                            "Mass",
+                                            "Free directions",
+                                            "Velocity function",
+                                            "Time step scale factor",
+                                            "Minimum time step",
+                                            "Mass scaling time step",
+                                            "Bulk viscosity linear",
+                                            "Bulk viscosity quadratic"};
+        // "set <name> = <value>", the name padded to a common width.
+        const auto equals = line.find('=');
+        if (line.rfind("set ", 0) != 0 || equals == std::string::npos)
+          return false;
+        const std::string entry =
+          dealii::Utilities::trim(line.substr(4, equals - 4));
+        for (const char *name : names)
+          if (entry == name)
+            return true;
+        return false;
+      }
+    } // namespace
+
+
+
+    std::string
+    preload_parameters_text(const std::string &model_parameters)
+    {
+      std::istringstream lines(model_parameters);
+      std::string        line, text;
+      while (std::getline(lines, line))
+        if (!explicit_only(line))
+          text += line + '\n';
+      return text;
+    }
+
+
+
+    void
+    write_preload(const PreloadState &state,
+                  const std::string  &directory,
+                  const std::string  &parameters,
+                  const MPI_Comm      comm)
+    {
+      namespace fs                 = std::filesystem;
+      const std::string  entry     = "Time integration/Scheme";
+      const unsigned int rank      = dealii::Utilities::MPI::this_mpi_process(comm);
+      const std::string  new_directory = directory + ".new";
+      std::string        error;
+      if (rank == 0)
+        try
+          {
+            fs::remove_all(new_directory);
+            fs::create_directories(new_directory);
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      durable_files::throw_if_any(comm, entry, error);
+      try
+        {
+          std::ostringstream out;
+          out.write(preload_magic, sizeof(preload_magic));
+          const unsigned int n_owned =
+            state.displacement.get_partitioner()->locally_owned_size();
+          binary_io::write_doubles(out, state.displacement.begin(), n_owned);
+          binary_io::write_doubles(out,
+                                   state.history.data(),
+                                   state.history.size());
+          binary_io::write_doubles(out,
+                                   state.shortenings.data(),
+                                   state.shortenings.size());
+          binary_io::write_doubles(out,
+                                   state.section_forces.data(),
+                                   state.section_forces.size());
+          durable_files::write(new_directory + "/rank_" +
+                                 std::to_string(rank) + ".bin",
+                               out.str());
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+      durable_files::throw_if_any(comm, entry, error);
+      if (rank == 0)
+        try
+          {
+            std::ostringstream text;
+            text << std::setprecision(17) << "time " << state.time << '\n'
+                 << "ranks " << dealii::Utilities::MPI::n_mpi_processes(comm)
+                 << '\n'
+                 << "preload parameters\n"
+                 << parameters;
+            durable_files::write(new_directory + "/preload.txt", text.str());
+            durable_files::sync_directory(new_directory);
+            fs::remove_all(directory);
+            fs::rename(new_directory, directory);
+            durable_files::sync_directory(
+              fs::path(directory).parent_path().string());
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      durable_files::throw_if_any(comm, entry, error);
+    }
+
+
+
+    PreloadState
+    read_preload(
+      const std::string                                        &directory,
+      const std::string                                        &parameters,
+      const std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &partitioner,
+      const std::size_t                                         history_size,
+      const unsigned int                                        n_sections,
+      const MPI_Comm                                            comm)
+    {
+      const std::string entry = "Output/Restart from checkpoint";
+      PreloadState      state;
+      std::string       error;
+      try
+        {
+          const std::string path = directory + "/preload.txt";
+          std::ifstream     text(path);
+          if (!text)
+            throw InputError(entry,
+                             "there is no preload checkpoint in " + directory +
+                               " (written by a 'quasi-static then explicit' "
+                               "run)");
+          std::string  key[2], line, stored;
+          unsigned int ranks = 0;
+          text >> key[0] >> state.time >> key[1] >> ranks;
+          std::getline(text, line);
+          std::getline(text, line);
+          if (!text || key[0] != "time" || key[1] != "ranks" ||
+              line != "preload parameters")
+            throw InputError(entry, path + " is damaged");
+          while (std::getline(text, line))
+            stored += line + '\n';
+          if (stored != parameters)
+            {
+              std::istringstream a_lines(stored), b_lines(parameters);
+              std::string        a, b;
+              while (std::getline(a_lines, a) && std::getline(b_lines, b) &&
+                     a == b)
+                ;
+              throw InputError(entry,
+                               "the model differs from the preload's in " +
+                                 directory + " ('" + b + "' here, '" + a +
+                                 "' there); only the explicit run's entries "
+                                 "(End time, initial velocities, densities, "
+                                 "explicit step settings) and the Output "
+                                 "settings may change");
+            }
+          if (ranks != dealii::Utilities::MPI::n_mpi_processes(comm))
+            throw InputError(entry,
+                             "the preload in " + directory +
+                               " was written by " + std::to_string(ranks) +
+                               " ranks; run with as many");
+          const unsigned int rank =
+            dealii::Utilities::MPI::this_mpi_process(comm);
+          std::ifstream in(directory + "/rank_" + std::to_string(rank) +
+                             ".bin",
+                           std::ios::binary);
+          char magic[sizeof(preload_magic)] = {};
+          in.read(magic, sizeof(magic));
+          if (!in || std::string(magic) != preload_magic)
+            throw InputError(entry,
+                             "rank " + std::to_string(rank) +
+                               "'s file of the preload in " + directory +
+                               " is missing or damaged");
+          state.displacement.reinit(partitioner);
+          state.history.resize(history_size);
+          state.shortenings.resize(n_sections);
+          state.section_forces.resize(n_sections);
+          binary_io::read_doubles(in,
+                                  state.displacement.begin(),
+                                  partitioner->locally_owned_size(),
+                                  "displacements");
+          binary_io::read_doubles(in,
+                                  state.history.data(),
+                                  history_size,
+                                  "material history");
+          binary_io::read_doubles(in,
+                                  state.shortenings.data(),
+                                  n_sections,
+                                  "section shortenings");
+          binary_io::read_doubles(in,
+                                  state.section_forces.data(),
+                                  n_sections,
+                                  "section forces");
+        }
+      catch (const InputError &e)
+        {
+          error = e.message;
+        }
+      catch (const CheckpointError &e)
+        {
+          error = std::string("the preload in ") + directory +
+                  " does not fit this model: " + e.what();
+        }
+      durable_files::throw_if_any(comm, entry, error);
+      state.displacement.update_ghost_values();
+      return state;
+    }
+  } // namespace model
+} // namespace rubberdyn

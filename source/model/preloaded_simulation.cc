@@ -1,0 +1,154 @@
+#include <deal.II/base/mpi.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/model/preload.h>
+#include <rubberdyn/model/preloaded_simulation.h>
+#include <rubberdyn/model/quasi_static_simulation.h>
+
+#include <cmath>
+#include <ostream>
+#include <sstream>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    void
+    PreloadedSimulation::check_continuity(const Model &model,
+                                          const double end_time)
+    {
+      std::string message;
+      for (const BoundaryCondition &bc : model.boundary_conditions)
+        {
+          if (bc.type != BoundaryCondition::Type::displacement &&
+              bc.type != BoundaryCondition::Type::traction &&
+              bc.type != BoundaryCondition::Type::pressure)
+            continue;
+          for (const auto &cell : model.triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() && message.empty())
+              for (const auto face : cell->face_indices())
+                if (cell->face(face)->at_boundary() &&
+                    bc.boundary_ids.count(cell->face(face)->boundary_id()) &&
+                    message.empty())
+                  for (unsigned int k = 0; k < bc.functions.size(); ++k)
+                    {
+                      const Point<3> X     = cell->face(face)->center();
+                      const double   end   = bc.functions[k](X, end_time);
+                      const double   start = bc.functions[k](X, 0.);
+                      if (std::abs(end - start) >
+                          1e-12 * std::max({1., std::abs(end), std::abs(start)}))
+                        {
+                          std::ostringstream text;
+                          text << "'quasi-static then explicit' starts the "
+                                  "explicit run (t = 0) from the end of the "
+                                  "load path (t = "
+                               << end_time << "), so the condition must have "
+                               << "the same value at both; at (" << X
+                               << ") it is " << end << " at t = " << end_time
+                               << " and " << start
+                               << " at t = 0 (e.g. hold it constant, or write "
+                                  "it for the explicit run only)";
+                          message = text.str();
+                          break;
+                        }
+                    }
+          for (const std::string &m :
+               Utilities::MPI::all_gather(model.comm, message))
+            if (!m.empty())
+              throw InputError("Boundary conditions/" + bc.name +
+                                 "/Function expression",
+                               m);
+        }
+    }
+
+
+
+    PreloadedSimulation::PreloadedSimulation(
+      Model                             &model,
+      const parameters::TimeIntegration &time_integration,
+      const parameters::Output          &output,
+      const std::string                 &title,
+      const std::string                 &model_parameters)
+      : model(model)
+      , output(output)
+      , preload_parameters(preload_parameters_text(model_parameters))
+      , checkpoint_directory(output.directory + "/preload/checkpoint")
+    {
+      if (output.checkpoint_interval > 0.)
+        throw InputError("Output/Checkpoint interval",
+                         "'quasi-static then explicit' keeps its preload as "
+                         "a checkpoint by itself (" +
+                           checkpoint_directory +
+                           "); checkpoints of its explicit run are not "
+                           "supported yet: set 0");
+      check_continuity(model, time_integration.quasi_static_end_time);
+      QuasiStaticSimulation::check_supported(model, time_integration, output);
+      // The preload's rows go to preload/, the explicit run's to the
+      // output directory; the explicit run itself never restarts from an
+      // explicit checkpoint here (the preload is its start).
+      parameters::Output preload_output = output;
+      preload_output.directory          = output.directory + "/preload";
+      preload_output.restart            = false;
+      parameters::Output explicit_output = output;
+      explicit_output.restart            = false;
+      if (!output.restart)
+        quasi_static = std::make_unique<QuasiStaticSimulation>(
+          model, time_integration, preload_output, title + " preload");
+      explicit_run = std::make_unique<ExplicitSimulation>(
+        model, time_integration, explicit_output, title, model_parameters);
+      explicit_run->add_standard_postprocessors();
+    }
+
+
+
+    PreloadedSimulation::~PreloadedSimulation() = default;
+
+
+
+    void
+    PreloadedSimulation::check(std::ostream &log)
+    {
+      if (quasi_static)
+        quasi_static->check(log);
+      explicit_run->check(log);
+    }
+
+
+
+    void
+    PreloadedSimulation::run(std::ostream &log)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(model.comm) == 0;
+      PreloadState state;
+      if (quasi_static)
+        {
+          quasi_static->run(log);
+          state = quasi_static->preload_state();
+          write_preload(state,
+                        checkpoint_directory,
+                        preload_parameters,
+                        model.comm);
+          if (root)
+            log << "Preload written to " << checkpoint_directory << std::endl;
+        }
+      else
+        {
+          state = explicit_run->read_preload(checkpoint_directory,
+                                             preload_parameters);
+          if (root)
+            log << "Starting from the preload in " << checkpoint_directory
+                << " (t = " << state.time << ")" << std::endl;
+        }
+      if (root)
+        for (unsigned int s = 0; s < state.shortenings.size(); ++s)
+          log << "  Pretension section "
+              << model.pretension_sections[s].name << " locked: force "
+              << state.section_forces[s] << " kN, shortening "
+              << state.shortenings[s] << " mm" << std::endl;
+      explicit_run->start_from(state);
+      explicit_run->run(log);
+    }
+  } // namespace model
+} // namespace rubberdyn
