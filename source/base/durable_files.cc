@@ -2,6 +2,7 @@
 #include <rubberdyn/base/exceptions.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fcntl.h>
 #include <stdexcept>
 #include <unistd.h>
@@ -36,6 +37,27 @@ namespace rubberdyn
           ::fsync(fd);
           ::close(fd);
         }
+    }
+
+
+
+    void
+    create_empty_directory(const std::string &directory,
+                           const MPI_Comm     comm,
+                           const std::string &entry)
+    {
+      std::string error;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        try
+          {
+            std::filesystem::remove_all(directory);
+            std::filesystem::create_directories(directory);
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      throw_if_any(comm, entry, error);
     }
 
 

@@ -88,5 +88,25 @@ namespace rubberdyn
                             " (a denormal, below 2.2e-308 in magnitude)" :
                             ""));
     }
+
+
+
+    std::pair<std::string, std::string>
+    first_difference(const std::string &present, const std::string &stored)
+    {
+      std::istringstream a_lines(present), b_lines(stored);
+      std::string        a, b;
+      while (true)
+        {
+          const bool more_a = static_cast<bool>(std::getline(a_lines, a));
+          const bool more_b = static_cast<bool>(std::getline(b_lines, b));
+          if (!more_a)
+            a.clear();
+          if (!more_b)
+            b.clear();
+          if ((!more_a && !more_b) || a != b)
+            return {a, b};
+        }
+    }
   } // namespace parameter_tools
 } // namespace rubberdyn

@@ -5,6 +5,7 @@
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
@@ -167,17 +168,9 @@ namespace rubberdyn
       const std::string  new_directory = directory + ".new";
       const std::string  old_directory = directory + ".old";
       std::string        error;
-      if (rank == 0)
-        try
-          {
-            fs::remove_all(new_directory);
-            fs::create_directories(new_directory);
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
-      throw_if_any(comm, "Output/Checkpoint interval", error);
+      durable_files::create_empty_directory(new_directory,
+                                            comm,
+                                            "Output/Checkpoint interval");
 
       // Every rank: its state with the step and time it belongs to.
       const time_integration::ExplicitSolver &s = *explicit_solver;
@@ -272,13 +265,12 @@ namespace rubberdyn
       if (stored_parameters != model_parameters)
         {
           // Name the first entry that differs.
-          std::istringstream stored(stored_parameters), now(model_parameters);
-          std::string        a, b;
-          while (std::getline(stored, a) && std::getline(now, b) && a == b)
-            ;
+          const auto [here, there] =
+            parameter_tools::first_difference(model_parameters,
+                                              stored_parameters);
           throw InputError(entry,
-                           "the model differs from the checkpoint's ('" + b +
-                             "' here, '" + a +
+                           "the model differs from the checkpoint's ('" +
+                             here + "' here, '" + there +
                              "' there); only End time and the Output "
                              "settings may change on a restart");
         }

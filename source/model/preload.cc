@@ -3,6 +3,7 @@
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/model/preload.h>
 
 #include <filesystem>
@@ -72,17 +73,7 @@ namespace rubberdyn
       const unsigned int rank      = dealii::Utilities::MPI::this_mpi_process(comm);
       const std::string  new_directory = directory + ".new";
       std::string        error;
-      if (rank == 0)
-        try
-          {
-            fs::remove_all(new_directory);
-            fs::create_directories(new_directory);
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
-      durable_files::throw_if_any(comm, entry, error);
+      durable_files::create_empty_directory(new_directory, comm, entry);
       try
         {
           std::ostringstream out;
@@ -166,14 +157,12 @@ namespace rubberdyn
             stored += line + '\n';
           if (stored != parameters)
             {
-              std::istringstream a_lines(stored), b_lines(parameters);
-              std::string        a, b;
-              while (std::getline(a_lines, a) && std::getline(b_lines, b) &&
-                     a == b)
-                ;
+              const auto [here, there] =
+                parameter_tools::first_difference(parameters, stored);
               throw InputError(entry,
                                "the model differs from the preload's in " +
-                                 directory + " ('" + b + "' here, '" + a +
+                                 directory + " ('" + here + "' here, '" +
+                                 there +
                                  "' there); only the explicit run's entries "
                                  "(End time, initial velocities, densities, "
                                  "explicit step settings) and the Output "

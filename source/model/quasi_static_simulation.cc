@@ -8,6 +8,8 @@
 #include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
+#include <rubberdyn/postprocess/field_output.h>
+#include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -321,8 +323,42 @@ namespace rubberdyn
             0.;
       };
 
+      // ParaView fields of the converged states (the F-bar and
+      // displacement elements' Q1 dofs): every Field output interval of
+      // pseudo-time, and always the last one, also of a run that fails.
+      const auto *hexes =
+        dynamic_cast<const elements::SolidHexElements *>(elements.get());
+      std::unique_ptr<postprocess::FieldOutput> fields;
+      if (hexes != nullptr)
+        fields = std::make_unique<postprocess::FieldOutput>(
+          output.directory, "solution", model.comm, output.field_output_format);
+      else if (root)
+        log << "  No field output for the mixed u-p element yet (its Q2 dofs); "
+               "the time history only"
+            << std::endl;
+      double     next_field = 0., last_field = -1.;
+      const auto write_fields = [&]() {
+        if (!fields || s.time() == last_field)
+          return;
+        VectorType no_velocity(model.partitioner);
+        fields->write(model.dof_handler,
+                      s.displacement(),
+                      no_velocity,
+                      postprocess::solid_cell_data(model,
+                                                   *hexes,
+                                                   s.displacement()),
+                      s.time());
+        last_field = s.time();
+        if (output.field_output_interval > 0.)
+          next_field =
+            (std::floor(s.time() / output.field_output_interval + 1e-9) + 1.) *
+            output.field_output_interval;
+      };
+
       s.initialize();
       write_row();
+      if (output.field_output_interval > 0.)
+        write_fields();
       const double end_time = time_integration.quasi_static_end_time;
       try
         {
@@ -330,14 +366,23 @@ namespace rubberdyn
             if (s.time() >= next_row * (1. - 1e-12) ||
                 s.time() >= end_time * (1. - 1e-12))
               write_row();
+            if (output.field_output_interval > 0. &&
+                s.time() >= next_field * (1. - 1e-12))
+              write_fields();
           });
+          write_fields();
         }
       catch (const time_integration::QuasiStaticFailure &failure)
         {
+          write_fields();
           history.make_durable();
           throw std::runtime_error(
             "Quasi-static run failed: " + std::string(failure.what()) +
-            " (its rows are in " + output.directory + "/time_history.csv)");
+            " (its rows are in " + output.directory +
+            "/time_history.csv" +
+            (fields ? ", the last converged state in " + fields->index_file() :
+                      std::string()) +
+            ")");
         }
       if (root)
         {

@@ -26,7 +26,10 @@ namespace rubberdyn
       prm.declare_entry("Field output interval",
                         "1",
                         Patterns::Double(0.),
-                        "Time between ParaView outputs (ms); 0 writes none.");
+                        "Time between ParaView outputs (ms; in the "
+                        "quasi-static scheme, pseudo-time of the load "
+                        "path); 0: only the last state (also of a run that "
+                        "fails).");
       prm.declare_entry(
         "Field output format",
         "vtu",

@@ -97,13 +97,13 @@ namespace rubberdyn
 
 
 
-    void
-    FieldOutputWriter::write(const SimulationView &view)
+    std::vector<std::pair<std::string, std::vector<float>>>
+    solid_cell_data(const model::Model               &model,
+                    const elements::SolidHexElements &elements,
+                    const VectorType                 &u)
     {
-      const model::Model &model    = view.model;
-      const unsigned int  n_active = model.triangulation.n_active_cells();
-      const auto          averages =
-        view.elements.cell_averages(view.solver.displacement(), n_active);
+      const unsigned int n_active = model.triangulation.n_active_cells();
+      const auto         averages = elements.cell_averages(u, n_active);
       const char *names[6] = {"cauchy_stress_xx", "cauchy_stress_yy",
                               "cauchy_stress_zz", "cauchy_stress_xy",
                               "cauchy_stress_xz", "cauchy_stress_yz"};
@@ -123,6 +123,17 @@ namespace rubberdyn
           }
       cell_data.emplace_back("part_id", part_id);
       cell_data.emplace_back("material_id", material_id);
+      return cell_data;
+    }
+
+
+
+    void
+    FieldOutputWriter::write(const SimulationView &view)
+    {
+      const model::Model &model = view.model;
+      const auto          cell_data =
+        solid_cell_data(model, view.elements, view.solver.displacement());
       fields.write(model.dof_handler, view.solver.displacement(),
                    view.solver.velocity(), cell_data, view.solver.time());
       last_output_time = view.solver.time();

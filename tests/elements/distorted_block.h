@@ -6,11 +6,17 @@
 #ifndef rubberdyn_tests_elements_distorted_block_h
 #define rubberdyn_tests_elements_distorted_block_h
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <memory>
 
 namespace fixtures
 {
@@ -36,6 +42,30 @@ namespace fixtures
       },
       tria);
   }
+
+  /**
+   * The distorted block with its vector-valued FE_Q(@p degree)^3 dofs on
+   * one rank: what the element tests evaluate elements on.
+   */
+  struct DistortedBlock
+  {
+    DistortedBlock(const unsigned int nx,
+                   const unsigned int ny,
+                   const unsigned int degree = 1)
+      : fe(dealii::FE_Q<3>(degree), 3)
+    {
+      make_distorted_block(tria, nx, ny);
+      dof_handler.reinit(tria);
+      dof_handler.distribute_dofs(fe);
+      partitioner = std::make_shared<dealii::Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(), MPI_COMM_SELF);
+    }
+
+    dealii::Triangulation<3>                                   tria;
+    dealii::FESystem<3>                                        fe;
+    dealii::DoFHandler<3>                                      dof_handler;
+    std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+  };
 } // namespace fixtures
 
 #endif

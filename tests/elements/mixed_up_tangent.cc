@@ -51,15 +51,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Triangulation<3>                 tria;
-  fixtures::make_distorted_block(tria, 2, 1);
-  FESystem<3>   fe(FE_Q<3>(2), 3);
-  DoFHandler<3> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(),
-    MPI_COMM_SELF);
-  const unsigned int                          n = dof_handler.n_dofs();
+  const fixtures::DistortedBlock   block(2, 1, 2);
+  const FESystem<3>               &fe          = block.fe;
+  const DoFHandler<3>             &dof_handler = block.dof_handler;
+  const auto                      &partitioner = block.partitioner;
+  const unsigned int               n           = dof_handler.n_dofs();
   std::map<types::global_dof_index, Point<3>> support;
   DoFTools::map_dofs_to_support_points(MappingQ1<3>(), dof_handler, support);
 

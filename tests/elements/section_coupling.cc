@@ -46,15 +46,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Triangulation<3>                 tria;
-  fixtures::make_distorted_block(tria, 3, 2);
-  FESystem<3>   fe(FE_Q<3>(1), 3);
-  DoFHandler<3> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-    dof_handler.locally_owned_dofs(),
-    MPI_COMM_SELF);
-  const unsigned int n = dof_handler.n_dofs();
+  const fixtures::DistortedBlock   block(3, 2);
+  const FESystem<3>               &fe          = block.fe;
+  const DoFHandler<3>             &dof_handler = block.dof_handler;
+  const auto                      &partitioner = block.partitioner;
+  const unsigned int               n           = dof_handler.n_dofs();
 
   const double             C10 = 0.55e-3, C20 = -0.05e-3, C30 = 0.015e-3;
   const double             K_rubber = 1000. * 2. * C10;

@@ -26,6 +26,17 @@ namespace rubberdyn
     sync_directory(const std::string &path);
 
     /**
+     * Make @p directory exist and be empty (rank 0 removes what is there and
+     * creates it). Collective.
+     *
+     * @throws InputError naming @p entry on every rank if it cannot.
+     */
+    void
+    create_empty_directory(const std::string &directory,
+                           const MPI_Comm     comm,
+                           const std::string &entry);
+
+    /**
      * If any rank has a non-empty @p message, throw an InputError naming
      * @p entry with the first one, on every rank (a failure on one rank
      * must end all ranks, never leave the others waiting in a

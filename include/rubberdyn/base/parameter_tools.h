@@ -2,6 +2,7 @@
 #define rubberdyn_base_parameter_tools_h
 
 #include <string>
+#include <utility>
 
 namespace rubberdyn
 {
@@ -68,6 +69,15 @@ namespace rubberdyn
                    const std::string &unit,
                    const Sign         sign      = Sign::positive,
                    const std::string &also_from = "");
+
+    /**
+     * The first line in which two parameter texts (one entry per line, as
+     * model::ExplicitSimulation::model_parameters_text() writes them)
+     * differ: {line of @p present, line of @p stored} (empty where one text
+     * ends), for a message that names the entry that changed.
+     */
+    std::pair<std::string, std::string>
+    first_difference(const std::string &present, const std::string &stored);
   } // namespace parameter_tools
 } // namespace rubberdyn
 

@@ -8,11 +8,35 @@
 
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rubberdyn
 {
+  namespace model
+  {
+    class Model;
+  }
+  namespace elements
+  {
+    class SolidHexElements;
+  }
+
   namespace postprocess
   {
+    /**
+     * The cell data of the solid's state at displacement @p u (ghosted),
+     * one value per active cell (locally owned cells filled): the cell
+     * averages of the Cauchy stress components (`cauchy_stress_xx` ...
+     * `_yz`), `von_mises_stress` and `pressure` (GPa), `J`, `part_id` (index
+     * in the model's parts) and `material_id`: what every scheme writes
+     * with FieldOutput.
+     */
+    std::vector<std::pair<std::string, std::vector<float>>>
+    solid_cell_data(const model::Model               &model,
+                    const elements::SolidHexElements &elements,
+                    const VectorType                 &u);
+
     /**
      * The ParaView series as a postprocessor: at every `Field output
      * interval` and at the end of the run it writes the displacement and
