@@ -442,8 +442,10 @@ namespace rubberdyn
         {
           const internal::HexBlock &block = blocks[b];
           const GroupData &group        = groups[block.group];
+          // (Without sections, one predictable test per block.)
           context.offsets =
-            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr;
+            !cuts.empty() && block_offsets(b, offsets) ? &offsets[0][0][0] :
+                                                         nullptr;
           context.kernel                = group.kernel.get();
           context.density               = group.density;
           context.stabilization_modulus = group.stabilization_modulus;
