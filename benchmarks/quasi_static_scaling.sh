@@ -8,12 +8,15 @@
 # with the direct solver KLU on the smallest size of each model only (KLU
 # has no nested-dissection ordering: 970 s on block 16^3). Per series the
 # growth exponent p of the wall and of the CPU time, t ~ N^p (least squares
-# on log t against log N over the sizes that finished), and the time per
-# Newton iteration (CPU).
+# on log t against log N over the sizes that finished), the CPU time per
+# Newton iteration, and the growth of the peak memory per dof between the
+# smallest and the largest size (the libraries alone take about 170 MB).
 #   benchmarks/quasi_static_scaling.sh [BUILD_DIR] [WORK_DIR] [RANKS] [LIMIT]
-# Each run is stopped after LIMIT seconds of CPU time (default 900; ulimit
-# -t, and after 3 LIMIT of wall time) and reported as dropped. Needs gmsh (Debian package gmsh) for the meshes beyond the
-# shipped ones; one thread per process (OMP_NUM_THREADS=1).
+# Each run is stopped after LIMIT seconds of CPU time (default 900, ulimit
+# -t; and after 3 LIMIT of wall time, for a loaded machine) and reported as
+# dropped: MUMPS on block 32^3 (107 811 dofs) is, with the reference BLAS.
+# Needs gmsh (Debian package gmsh) for the meshes beyond the shipped ones;
+# one thread per process (OMP_NUM_THREADS=1). Results: benchmarks/README.md.
 # - block: parameter_files/uniaxial_compression_quasi_static.prm (the
 #   octant on three symmetry planes, F-bar) on compression_block_n,
 #   n = 8, 16, 32 (n^3 cells), compressed by 30 % in its 20 load steps;
@@ -57,17 +60,17 @@ run() { # run NAME PRM MESH SOLVER [SED]; SOLVER = MUMPS, KLU or AMG
   local launcher=()
   [ "$ranks" -gt 1 ] && launcher=(mpirun --oversubscribe -np "$ranks")
   local status=0
-  ( ulimit -t "$limit"
+  ( ulimit -S -t "$limit"
     /usr/bin/time -f "%e %U %S %M" -o "$name.time" \
       timeout $((3 * limit)) "${launcher[@]}" "$build/rubberdyn" "$name.prm" ) > "$name.log" 2>&1 || status=$?
   local wall user sys memory cells dofs summary
   read -r wall user sys memory < <(tail -1 "$name.time")
-  cells=$(grep -o "[0-9]* cells" "$name.log" | head -1 | cut -d' ' -f1)
-  dofs=$(grep -o "[0-9]* dofs" "$name.log" | head -1 | cut -d' ' -f1)
+  cells=$(grep -o "[0-9]* cells" "$name.log" | head -1 | cut -d' ' -f1 || true)
+  dofs=$(grep -o "[0-9]* dofs" "$name.log" | head -1 | cut -d' ' -f1 || true)
   summary=$(grep "^Finished" "$name.log" || true)
   if [ $status -ne 0 ] || [ -z "$summary" ]; then
     local why="failed (exit $status)"
-    [ $status -eq 124 ] || [ $status -eq 152 ] || grep -q "signal 24" "$name.time" &&
+    [ $status -eq 124 ] || [ $status -eq 152 ] || grep -q "signal \(24\|9\)$" "$name.time" &&
       why="dropped: stopped after $limit s"
     echo "| $name | $cells | $dofs | $solver | $why | | | | | | | |" >> rows.md
     return 0
@@ -86,7 +89,7 @@ run() { # run NAME PRM MESH SOLVER [SED]; SOLVER = MUMPS, KLU or AMG
   }' >> rows.md 2>> times.txt
 }
 
-rm -f times.txt
+rm -f times.txt && touch times.txt
 for n in 8 16 32; do
   for solver in MUMPS AMG KLU; do
     [ $solver = KLU ] && [ $n != 8 ] && continue
@@ -111,7 +114,7 @@ done
   echo
   for model in block tube; do
     for solver in MUMPS AMG; do
-      grep "^${model}_[0-9]*_$solver " times.txt | awk -v m=$model -v s=$solver '{
+      { grep "^${model}_[0-9]*_$solver " times.txt || true; } | awk -v m=$model -v s=$solver '{
         x = log($2); sx += x; sxx += x * x; ++n
         y = log($3); sy += y; sxy += x * y
         z = log($4); sz += z; sxz += x * z
