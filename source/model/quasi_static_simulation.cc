@@ -386,17 +386,23 @@ namespace rubberdyn
         }
       if (root)
         {
-          unsigned int iterations = 0, linear = 0, cutbacks = 0;
+          unsigned int iterations = 0, linear = 0, cutbacks = 0, wasted = 0;
           for (const auto &step : s.steps())
             {
               iterations += step.iterations;
               linear += step.linear_iterations;
               cutbacks += step.cutbacks;
+              wasted += step.cutback_iterations;
             }
+          // (The converged attempts' iterations first: scripts read the
+          // number before "Newton".)
           log << "Finished: " << s.steps().size()
               << " load steps to t = " << s.time() << ", " << iterations
               << " Newton iterations, " << linear << " linear iterations, "
-              << cutbacks << " cut-backs" << std::endl;
+              << cutbacks << " cut-backs";
+          if (cutbacks > 0)
+            log << " (which took " << wasted << " more iterations)";
+          log << std::endl;
         }
     }
   } // namespace model

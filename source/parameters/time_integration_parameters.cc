@@ -98,7 +98,7 @@ namespace rubberdyn
                           "algebraic multigrid with the six rigid-body "
                           "modes; 'automatic': direct up to the Direct "
                           "solver limit, AMG above.");
-        prm.declare_entry("Direct solver limit", "60000", Patterns::Integer(0),
+        prm.declare_entry("Direct solver limit", "20000", Patterns::Integer(0),
                           "'automatic' uses the direct solver up to this "
                           "many dofs (-).");
         prm.declare_entry("Direct solver", "MUMPS",

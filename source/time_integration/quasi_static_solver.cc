@@ -863,7 +863,7 @@ namespace rubberdyn
       std::vector<double> delta_start, delta_trial, d_delta, delta_increment,
         prescribed;
       double                   step = std::min(s.initial_step, s.maximum_step);
-      unsigned int             cutbacks = 0;
+      unsigned int             cutbacks = 0, cutback_iterations = 0;
       while (current_time < end_time * (1. - 1e-12))
         {
           // Never step over a lock time: the section's target is reached
@@ -1026,6 +1026,7 @@ namespace rubberdyn
               u.update_ghost_values();
               shortening = delta_start;
               ++cutbacks;
+              cutback_iterations += std::min(iteration + 1, s.max_iterations);
               if (root)
                 log << "  Cut back: " << reason << std::endl;
               if (cutbacks > s.max_cutbacks || 0.5 * step < s.minimum_step)
@@ -1044,8 +1045,14 @@ namespace rubberdyn
             }
 
           current_time = t_new;
-          records.push_back({t_new, step, iteration, linear_total, cutbacks});
-          cutbacks = 0;
+          records.push_back({t_new,
+                             step,
+                             iteration,
+                             linear_total,
+                             cutbacks,
+                             cutback_iterations});
+          cutbacks           = 0;
+          cutback_iterations = 0;
           // Reactions and energies of the converged state (this evaluation
           // writes the same new history as the last iteration's), then its
           // history becomes the start of the next step.

@@ -59,7 +59,7 @@ namespace rubberdyn
       bool         line_search   = true;
       LinearSolver linear_solver = LinearSolver::automatic;
       /** automatic: the direct solver up to this many dofs. */
-      unsigned int direct_solver_limit = 60000;
+      unsigned int direct_solver_limit = 20000;
       /**
        * The direct solver's Amesos package: "Amesos_Mumps" (multifrontal,
        * nested-dissection ordering, distributed) or "Amesos_Klu" (serial

@@ -64,6 +64,11 @@ namespace rubberdyn
       unsigned int linear_iterations = 0;
       /** Cut-backs before it converged. */
       unsigned int cutbacks = 0;
+      /**
+       * Newton iterations spent in those cut-back attempts (the cost that
+       * `iterations` does not show).
+       */
+      unsigned int cutback_iterations = 0;
     };
 
     /**
