@@ -368,6 +368,25 @@ namespace rubberdyn
 
 
 
+      // N_s += g_e . f_e for the lanes of a block that sections cut
+      // (SolidHexElements::SectionCut, a private type: deduced).
+      template <typename Cut>
+      void
+      add_section_forces(const Cut          &cut,
+                         const unsigned int  n_active,
+                         const BlockResult  &block_result,
+                         std::vector<double> &section_force)
+      {
+        for (unsigned int l = 0; l < n_active; ++l)
+          if (cut.section[l] != numbers::invalid_unsigned_int)
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                section_force[cut.section[l]] +=
+                  cut.direction[a][d][l] * block_result.force[a][d][l];
+      }
+
+
+
       // The user's message for a failed element.
       std::string
       failure_message(const FailureKind      kind,
@@ -498,17 +517,11 @@ namespace rubberdyn
                 for (unsigned int d = 0; d < 3; ++d)
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];
             }
-          // N_s = sum_e g_e . f_e over the elements the section cuts.
           if (context.offsets != nullptr)
-            {
-              const SectionCut &cut = cuts[cut_of_block[b]];
-              for (unsigned int l = 0; l < block.n_active; ++l)
-                if (cut.section[l] != numbers::invalid_unsigned_int)
-                  for (unsigned int a = 0; a < n_nodes; ++a)
-                    for (unsigned int d = 0; d < 3; ++d)
-                      result.section_force[cut.section[l]] +=
-                        cut.direction[a][d][l] * block_result.force[a][d][l];
-            }
+            add_section_forces(cuts[cut_of_block[b]],
+                               block.n_active,
+                               block_result,
+                               result.section_force);
           result.internal_energy_by_group[block.group] += group_energy;
           result.bulk_viscosity_power_by_group[block.group] +=
             group_viscous_power;
@@ -553,12 +566,7 @@ namespace rubberdyn
                               no_scaling,
                               block_result))
             continue;
-          for (unsigned int l = 0; l < block.n_active; ++l)
-            if (cut.section[l] != numbers::invalid_unsigned_int)
-              for (unsigned int a = 0; a < n_nodes; ++a)
-                for (unsigned int d = 0; d < 3; ++d)
-                  force[cut.section[l]] +=
-                    cut.direction[a][d][l] * block_result.force[a][d][l];
+          add_section_forces(cut, block.n_active, block_result, force);
         }
       return force;
     }

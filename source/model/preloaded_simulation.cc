@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
@@ -19,48 +20,42 @@ namespace rubberdyn
     PreloadedSimulation::check_continuity(const Model &model,
                                           const double end_time)
     {
-      std::string message;
+      // The first face centre of @p bc where the value jumps, as a message.
+      const auto jump = [&](const BoundaryCondition &bc) -> std::string {
+        for (const auto &cell : model.triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto face : cell->face_indices())
+              if (cell->face(face)->at_boundary() &&
+                  bc.boundary_ids.count(cell->face(face)->boundary_id()))
+                for (const auto &function : bc.functions)
+                  {
+                    const Point<3> X     = cell->face(face)->center();
+                    const double   end   = function(X, end_time);
+                    const double   start = function(X, 0.);
+                    if (std::abs(end - start) <=
+                        1e-12 * std::max({1., std::abs(end), std::abs(start)}))
+                      continue;
+                    std::ostringstream text;
+                    text << "'quasi-static then explicit' starts the "
+                            "explicit run (t = 0) from the end of the "
+                            "load path (t = "
+                         << end_time << "), so the condition must have "
+                         << "the same value at both; at (" << X << ") it is "
+                         << end << " at t = " << end_time << " and " << start
+                         << " at t = 0 (e.g. hold it constant, or write it "
+                            "for the explicit run only)";
+                    return text.str();
+                  }
+        return "";
+      };
       for (const BoundaryCondition &bc : model.boundary_conditions)
-        {
-          if (bc.type != BoundaryCondition::Type::displacement &&
-              bc.type != BoundaryCondition::Type::traction &&
-              bc.type != BoundaryCondition::Type::pressure)
-            continue;
-          for (const auto &cell : model.triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() && message.empty())
-              for (const auto face : cell->face_indices())
-                if (cell->face(face)->at_boundary() &&
-                    bc.boundary_ids.count(cell->face(face)->boundary_id()) &&
-                    message.empty())
-                  for (unsigned int k = 0; k < bc.functions.size(); ++k)
-                    {
-                      const Point<3> X     = cell->face(face)->center();
-                      const double   end   = bc.functions[k](X, end_time);
-                      const double   start = bc.functions[k](X, 0.);
-                      if (std::abs(end - start) >
-                          1e-12 * std::max({1., std::abs(end), std::abs(start)}))
-                        {
-                          std::ostringstream text;
-                          text << "'quasi-static then explicit' starts the "
-                                  "explicit run (t = 0) from the end of the "
-                                  "load path (t = "
-                               << end_time << "), so the condition must have "
-                               << "the same value at both; at (" << X
-                               << ") it is " << end << " at t = " << end_time
-                               << " and " << start
-                               << " at t = 0 (e.g. hold it constant, or write "
-                                  "it for the explicit run only)";
-                          message = text.str();
-                          break;
-                        }
-                    }
-          for (const std::string &m :
-               Utilities::MPI::all_gather(model.comm, message))
-            if (!m.empty())
-              throw InputError("Boundary conditions/" + bc.name +
-                                 "/Function expression",
-                               m);
-        }
+        if (bc.type == BoundaryCondition::Type::displacement ||
+            bc.type == BoundaryCondition::Type::traction ||
+            bc.type == BoundaryCondition::Type::pressure)
+          durable_files::throw_if_any(model.comm,
+                                      "Boundary conditions/" + bc.name +
+                                        "/Function expression",
+                                      jump(bc));
     }
 
 

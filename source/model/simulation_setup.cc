@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/simulation_setup.h>
@@ -146,10 +147,9 @@ namespace rubberdyn
             n_cut.assign(sections.size(), 0);
           }
         // (An element cut twice on one rank ends every rank.)
-        for (const std::string &m :
-             Utilities::MPI::all_gather(model.comm, error))
-          if (!m.empty())
-            throw InputError("Pretension sections/Names", m);
+        durable_files::throw_if_any(model.comm,
+                                    "Pretension sections/Names",
+                                    error);
         Utilities::MPI::sum(ArrayView<const unsigned int>(n_cut),
                             model.comm,
                             ArrayView<unsigned int>(n_cut));
