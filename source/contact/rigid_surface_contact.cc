@@ -99,11 +99,13 @@ namespace rubberdyn
 
       // Friction state: no tangential force; the last relative position is
       // unknown (NaN) until the first evaluation.
-      friction_state.assign(nodes.size() * surfaces.size() * 6,
+      accepted_state.assign(nodes.size() * surfaces.size() * 6,
                             std::numeric_limits<double>::quiet_NaN());
       for (unsigned int n = 0; n < nodes.size() * surfaces.size(); ++n)
         for (unsigned int d = 0; d < 3; ++d)
-          friction_state[n * 6 + d] = 0.;
+          accepted_state[n * 6 + d] = 0.;
+      trial_state   = accepted_state;
+      trial_pending = false;
     }
 
 
@@ -112,9 +114,12 @@ namespace rubberdyn
     RigidSurfaceContact::gap_and_normal(const RigidSurface &surface,
                                         const Point<3> &    x,
                                         double &            gap,
-                                        Tensor<1, 3> &      normal)
+                                        Tensor<1, 3> &      normal,
+                                        Tensor<2, 3> *      curvature)
     {
       const Tensor<1, 3> from_point = x - surface.point;
+      if (curvature != nullptr)
+        *curvature = 0.;
       if (surface.shape == RigidSurface::Shape::plane)
         {
           normal = surface.normal;
@@ -138,15 +143,132 @@ namespace rubberdyn
           direction = cross_product_3d(surface.normal, trial);
           direction /= direction.norm();
         }
-      if (surface.shape == RigidSurface::Shape::cylinder_solid_outside)
+      const double sign =
+        surface.shape == RigidSurface::Shape::cylinder_solid_outside ? 1. :
+                                                                        -1.;
+      gap    = sign * (distance - surface.radius);
+      normal = sign * direction;
+      // d(direction)/dx = (1 - a a - d d) / distance, a the axis.
+      if (curvature != nullptr && distance > 0.)
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            (*curvature)[i][j] =
+              sign *
+              ((i == j ? 1. : 0.) - surface.normal[i] * surface.normal[j] -
+               direction[i] * direction[j]) /
+              distance;
+    }
+
+
+
+    Point<3>
+    RigidSurfaceContact::relative_position(const SurfacePose &p,
+                                           const Point<3>    &x)
+    {
+      // Relative to the surface's translation, and rotated back for a
+      // rotating body (the friction state is kept in that frame, so it
+      // turns with the body).
+      return p.rotated ?
+               p.centre + transpose(p.rotation) *
+                            (x - p.centre - p.displacement) :
+               x - p.displacement;
+    }
+
+
+
+    void
+    RigidSurfaceContact::node_contact(const RigidSurface &surface,
+                                      const double        stiffness,
+                                      const Point<3>     &x,
+                                      const double        gap,
+                                      const Tensor<1, 3> &normal,
+                                      const Tensor<2, 3> &curvature,
+                                      const Tensor<1, 3> &accepted_force,
+                                      const Tensor<1, 3> &accepted_position,
+                                      NodeContact        &c,
+                                      Tensor<2, 3>       *jacobian)
+    {
+      c.normal_force = -stiffness * gap; // > 0
+      c.force        = c.normal_force * normal;
+      c.slip         = false;
+      c.old_force = c.increment = c.tangential_force = Tensor<1, 3>();
+      Tensor<2, 3> one;
+      for (unsigned int d = 0; d < 3; ++d)
+        one[d][d] = 1.;
+      // Normal: f = -k g n, df/dx = -k (n n + g dn/dx).
+      if (jacobian != nullptr)
+        *jacobian = -stiffness * (outer_product(normal, normal) +
+                                  gap * curvature);
+      if (surface.friction_coefficient == 0.)
+        return;
+
+      // Rotate the old force into the current tangent plane (keeping its
+      // magnitude), then add the elastic increment of the tangential
+      // relative motion.
+      Tensor<1, 3> &tangential_force = c.tangential_force;
+      tangential_force               = accepted_force;
+      const double old_magnitude     = tangential_force.norm();
+      tangential_force -= (tangential_force * normal) * normal;
+      const double projected = tangential_force.norm();
+      const Tensor<1, 3> turned = tangential_force;
+      if (projected > 0.)
+        tangential_force *= old_magnitude / projected;
+      const bool   has_position = !std::isnan(accepted_position[0]);
+      Tensor<1, 3> motion       = x - accepted_position;
+      if (!has_position)
+        motion = 0.;
+      Tensor<1, 3> &increment = c.increment;
+      increment               = motion;
+      increment -= (increment * normal) * normal;
+      c.old_force = tangential_force;
+      tangential_force -= stiffness * increment;
+      const double limit = surface.friction_coefficient * c.normal_force;
+      const double trial = tangential_force.norm();
+      const Tensor<1, 3> trial_force = tangential_force;
+      // Slip only beyond the cone, with a tolerance for round-off: a node
+      // that slipped in the accepted state sits on the cone, and must stick
+      // when it does not move (the elastic predictor of a return mapping);
+      // classified by round-off it could be either, and the quasi-static
+      // solver would linearise about a sliding floor (zero stiffness along
+      // the slip) at the start of every load step.
+      if (trial > limit * (1. + 1e-12))
         {
-          gap    = distance - surface.radius;
-          normal = direction;
+          // Slip: back to the cone.
+          tangential_force *= limit / trial;
+          c.slip = true;
         }
+      c.force += tangential_force;
+      if (jacobian == nullptr)
+        return;
+
+      // The old force turned: t1 = t - (t.n) n, dt1/dx = -n (G t) - (t.n) G
+      // with G = dn/dx (symmetric), then scaled to its old magnitude.
+      const Tensor<1, 3> &t = accepted_force;
+      Tensor<2, 3>        d_turned =
+        -outer_product(normal, curvature * t) - (t * normal) * curvature;
+      if (projected > 0.)
+        {
+          const Tensor<1, 3> e = turned / projected;
+          d_turned = (old_magnitude / projected) *
+                     ((one - outer_product(e, e)) * d_turned);
+        }
+      // The tangential increment: dt = m - (m.n) n, m = x - x_accepted.
+      Tensor<2, 3> d_increment;
+      if (has_position)
+        d_increment = one - outer_product(normal, normal) -
+                      outer_product(normal, curvature * motion) -
+                      (motion * normal) * curvature;
+      const Tensor<2, 3> d_trial = d_turned - stiffness * d_increment;
+      if (!c.slip)
+        *jacobian += d_trial;
       else
         {
-          gap    = surface.radius - distance;
-          normal = -direction;
+          // f_t = L tau, L = mu k (-g) (dL/dx = -mu k n), tau = trial/|trial|.
+          const Tensor<1, 3> tau = trial_force / trial;
+          *jacobian +=
+            outer_product(tau,
+                          -surface.friction_coefficient * stiffness * normal) +
+            (limit / trial) * ((one - outer_product(tau, tau)) * d_trial);
         }
     }
 
@@ -166,6 +288,8 @@ namespace rubberdyn
       result.penalty_energy       = 0.;
       result.friction_dissipation = 0.;
       n_touched.resize(nodes.size());
+      const Tensor<2, 3> no_curvature;
+      NodeContact        c;
       for (unsigned int n = 0; n < nodes.size(); ++n)
         {
           n_touched[n] = 0;
@@ -175,26 +299,22 @@ namespace rubberdyn
             x[d] += u.local_element(node.dofs[d]);
           for (unsigned int s = 0; s < n_surfaces; ++s)
             {
-              const RigidSurface &surface = surfaces[s];
-              // Position in the surface's reference frame: relative to its
-              // translation, and rotated back for a rotating body (the
-              // friction state is kept in that frame, so it turns with
-              // the body).
-              const SurfacePose &p          = pose[s];
-              const Point<3>     x_relative =
-                p.rotated ? p.centre + transpose(p.rotation) *
-                                         (x - p.centre - p.displacement) :
-                            x - p.displacement;
-              double       gap;
-              Tensor<1, 3> normal;
+              const RigidSurface &surface    = surfaces[s];
+              const SurfacePose  &p          = pose[s];
+              const Point<3>      x_relative = relative_position(p, x);
+              double              gap;
+              Tensor<1, 3>        normal;
               gap_and_normal(surface, x_relative, gap, normal);
 
-              double *const state = &friction_state[(n * n_surfaces + s) * 6];
+              // From the accepted state into the trial state.
+              const double *const old =
+                &accepted_state[(n * n_surfaces + s) * 6];
+              double *const state = &trial_state[(n * n_surfaces + s) * 6];
               Tensor<1, 3>  tangential_force, last_position;
               for (unsigned int d = 0; d < 3; ++d)
                 {
-                  tangential_force[d] = state[d];
-                  last_position[d]    = state[3 + d];
+                  tangential_force[d] = old[d];
+                  last_position[d]    = old[3 + d];
                   state[3 + d]        = x_relative[d];
                 }
               if (gap >= 0.)
@@ -219,63 +339,125 @@ namespace rubberdyn
                 }
 
               ++n_touched[n];
-              const double normal_force = -node.stiffness * gap; // > 0
-              Tensor<1, 3> force        = normal_force * normal;
+              node_contact(surface,
+                           node.stiffness,
+                           x_relative,
+                           gap,
+                           normal,
+                           no_curvature,
+                           tangential_force,
+                           last_position,
+                           c,
+                           nullptr);
               result.penalty_energy += 0.5 * node.stiffness * gap * gap;
-
               if (surface.friction_coefficient > 0.)
                 {
-                  // Rotate the old force into the current tangent plane
-                  // (keeping its magnitude), then add the elastic
-                  // increment of the tangential relative motion.
-                  const double old_magnitude = tangential_force.norm();
-                  tangential_force -= (tangential_force * normal) * normal;
-                  const double projected = tangential_force.norm();
-                  if (projected > 0.)
-                    tangential_force *= old_magnitude / projected;
-                  Tensor<1, 3> increment = x_relative - last_position;
-                  if (std::isnan(last_position[0]))
-                    increment = 0.;
-                  increment -= (increment * normal) * normal;
-                  const Tensor<1, 3> old_force = tangential_force;
-                  tangential_force -= node.stiffness * increment;
-                  const double limit =
-                    surface.friction_coefficient * normal_force;
-                  const double trial = tangential_force.norm();
-                  if (trial > limit)
-                    {
-                      // Slip: back to the cone. Dissipated: the work the
-                      // node did on the spring over the step (trapezoidal
-                      // rule, as the energy balance sees it) minus what the
-                      // spring now holds more. Steady slip at the limit
-                      // gives limit |increment|; a limit that shrinks with
-                      // no motion gives all the energy released,
-                      // (trial^2 - limit^2) / 2k (the part (trial -
-                      // limit)^2 / 2k of it went missing when only
-                      // limit (trial - limit) / k was booked).
-                      tangential_force *= limit / trial;
-                      result.friction_dissipation +=
-                        -0.5 * (old_force + tangential_force) * increment -
-                        0.5 *
-                          (tangential_force.norm_square() -
-                           old_force.norm_square()) /
-                          node.stiffness;
-                    }
+                  if (c.slip)
+                    // Dissipated: the work the node did on the spring over
+                    // the step (trapezoidal rule, as the energy balance
+                    // sees it) minus what the spring now holds more. Steady
+                    // slip at the limit gives limit |increment|; a limit
+                    // that shrinks with no motion gives all the energy
+                    // released, (trial^2 - limit^2) / 2k (the part (trial -
+                    // limit)^2 / 2k of it went missing when only limit
+                    // (trial - limit) / k was booked).
+                    result.friction_dissipation +=
+                      -0.5 * (c.old_force + c.tangential_force) *
+                        c.increment -
+                      0.5 *
+                        (c.tangential_force.norm_square() -
+                         c.old_force.norm_square()) /
+                        node.stiffness;
                   result.penalty_energy += 0.5 *
-                                           tangential_force.norm_square() /
+                                           c.tangential_force.norm_square() /
                                            node.stiffness;
-                  force += tangential_force;
                 }
               for (unsigned int d = 0; d < 3; ++d)
-                state[d] = tangential_force[d];
+                state[d] = c.tangential_force[d];
               // Back to the spatial frame.
-              if (p.rotated)
-                force = p.rotation * force;
+              const Tensor<1, 3> force =
+                p.rotated ? Tensor<1, 3>(p.rotation * c.force) : c.force;
               for (unsigned int d = 0; d < 3; ++d)
                 f.local_element(node.dofs[d]) += force[d];
               result.force_on_plane[s] -= force;
               result.moment_on_plane[s] -=
                 cross_product_3d(x - p.centre - p.displacement, force);
+            }
+        }
+      trial_pending = true;
+    }
+
+
+
+    void
+    RigidSurfaceContact::accept()
+    {
+      if (trial_pending)
+        accepted_state.swap(trial_state);
+      trial_pending = false;
+    }
+
+
+
+    bool
+    RigidSurfaceContact::has_friction() const
+    {
+      for (const RigidSurface &surface : surfaces)
+        if (surface.friction_coefficient > 0.)
+          return true;
+      return false;
+    }
+
+
+
+    void
+    RigidSurfaceContact::add_tangents(const VectorType               &u,
+                                      const std::vector<SurfacePose> &pose,
+                                      const NodeTangent &add) const
+    {
+      const unsigned int n_surfaces = surfaces.size();
+      AssertDimension(pose.size(), n_surfaces);
+      NodeContact c;
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+        {
+          const Node &node = nodes[n];
+          Point<3>    x    = node.X;
+          for (unsigned int d = 0; d < 3; ++d)
+            x[d] += u.local_element(node.dofs[d]);
+          for (unsigned int s = 0; s < n_surfaces; ++s)
+            {
+              const SurfacePose &p          = pose[s];
+              const Point<3>     x_relative = relative_position(p, x);
+              double             gap;
+              Tensor<1, 3>       normal;
+              Tensor<2, 3>       curvature;
+              gap_and_normal(surfaces[s], x_relative, gap, normal, &curvature);
+              // A closed gap is active (the class documentation).
+              if (gap > 0.)
+                continue;
+              const double *const old =
+                &accepted_state[(n * n_surfaces + s) * 6];
+              const Tensor<1, 3> accepted_force({old[0], old[1], old[2]});
+              const Tensor<1, 3> accepted_position({old[3], old[4], old[5]});
+              Tensor<2, 3>       jacobian;
+              node_contact(surfaces[s],
+                           node.stiffness,
+                           x_relative,
+                           gap,
+                           normal,
+                           curvature,
+                           accepted_force,
+                           accepted_position,
+                           c,
+                           &jacobian);
+              // x_relative = R^T (x - ...), force = R f: dF/dx = R J R^T;
+              // the resisting force is minus the contact force.
+              const Tensor<2, 3> K =
+                p.rotated ?
+                  Tensor<2, 3>(-(p.rotation * jacobian *
+                                 transpose(p.rotation))) :
+                  Tensor<2, 3>(-jacobian);
+              add(node.dofs, K);
             }
         }
     }
@@ -312,7 +494,9 @@ namespace rubberdyn
     std::vector<double> &
     RigidSurfaceContact::state()
     {
-      return friction_state;
+      // (A caller may overwrite it: a pending trial state is stale then.)
+      trial_pending = false;
+      return accepted_state;
     }
   } // namespace contact
 } // namespace rubberdyn

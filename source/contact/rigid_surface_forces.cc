@@ -33,20 +33,30 @@ namespace rubberdyn
 
 
 
+    std::vector<SurfacePose>
+    RigidSurfaceForces::poses(const std::vector<model::RigidBody> &bodies) const
+    {
+      std::vector<SurfacePose> result(body_of_surface.size());
+      for (unsigned int s = 0; s < body_of_surface.size(); ++s)
+        {
+          AssertIndexRange(body_of_surface[s], bodies.size());
+          const model::RigidBody &body = bodies[body_of_surface[s]];
+          result[s].displacement        = body.displacement;
+          result[s].rotation            = body.rotation;
+          result[s].centre              = body.reference_position;
+          result[s].rotated             = body.rotates();
+        }
+      return result;
+    }
+
+
+
     void
     RigidSurfaceForces::add_forces(const model::EvaluationPoint &point,
                                    VectorType &                  f,
                                    model::ContributionResults &  results)
     {
-      for (unsigned int s = 0; s < body_of_surface.size(); ++s)
-        {
-          AssertIndexRange(body_of_surface[s], point.bodies.size());
-          const model::RigidBody &body = point.bodies[body_of_surface[s]];
-          pose[s].displacement          = body.displacement;
-          pose[s].rotation              = body.rotation;
-          pose[s].centre                = body.reference_position;
-          pose[s].rotated               = body.rotates();
-        }
+      pose = poses(point.bodies);
       contact.add_forces(point.displacement, pose, f, contact_result);
       results.contact_energy += contact_result.penalty_energy;
       results.friction_dissipation += contact_result.friction_dissipation;
@@ -64,9 +74,48 @@ namespace rubberdyn
 
 
 
+    bool
+    RigidSurfaceForces::supports_implicit() const
+    {
+      return true;
+    }
+
+
+
+    bool
+    RigidSurfaceForces::symmetric_tangent() const
+    {
+      return !contact.has_friction();
+    }
+
+
+
+    void
+    RigidSurfaceForces::add_tangents(const model::EvaluationPoint &point,
+                                     const TangentBlock           &add) const
+    {
+      std::vector<unsigned int> dofs(3);
+      std::vector<double>       K(9);
+      contact.add_tangents(point.displacement,
+                           poses(point.bodies),
+                           [&](const unsigned int (&node_dofs)[3],
+                               const Tensor<2, 3> &node_K) {
+                             for (unsigned int i = 0; i < 3; ++i)
+                               {
+                                 dofs[i] = node_dofs[i];
+                                 for (unsigned int j = 0; j < 3; ++j)
+                                   K[3 * i + j] = node_K[i][j];
+                               }
+                             add(dofs, K);
+                           });
+    }
+
+
+
     void
     RigidSurfaceForces::accept_step()
     {
+      contact.accept();
       accepted_friction_work += contact_result.friction_dissipation;
       contact_result.friction_dissipation = 0.;
     }

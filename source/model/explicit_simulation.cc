@@ -511,15 +511,6 @@ namespace rubberdyn
                             ArrayView<double>(added_mass_by_part));
       }
 
-      // One contact per rigid surface, each surface carried by its body.
-      std::vector<double> bulk_modulus_by_material;
-      for (const Part &part : model.parts)
-        for (const types::material_id id : part.material_ids)
-          {
-            if (bulk_modulus_by_material.size() <= id)
-              bulk_modulus_by_material.resize(id + 1, 0.);
-            bulk_modulus_by_material[id] = part.law->bulk_modulus();
-          }
       std::vector<model::ForceContribution *> contributions = {
         element_forces.get()};
       const std::vector<VectorType> mass_of_part = part_masses(model);
@@ -568,25 +559,21 @@ namespace rubberdyn
           }
 
       // One contact per rigid surface, each surface carried by its body.
+      std::vector<unsigned int> body_of_surface;
       for (unsigned int s = 0, own = 0; s < model.rigid_surfaces.size(); ++s)
         {
           const RigidSurfaceDefinition &definition = model.rigid_surfaces[s];
-          const unsigned int            body =
+          body_of_surface.push_back(
             definition.rigid_part.empty() ?
-                         own++ :
-                         body_of_part[model.part_index(definition.rigid_part)];
-          contacts.push_back(std::make_unique<contact::RigidSurfaceContact>());
-          contacts.back()->initialize(model.dof_handler,
-                                      model.partitioner,
-                                      definition.boundary_ids,
-                                      bulk_modulus_by_material,
-                                      definition.penalty_scale,
-                                      {definition.surface});
-          contact_forces.push_back(
-            std::make_unique<contact::RigidSurfaceForces>(
-              *contacts.back(), std::vector<unsigned int>{body}));
-          contributions.push_back(contact_forces.back().get());
+              own++ :
+              body_of_part[model.part_index(definition.rigid_part)]);
         }
+      setup::add_rigid_surface_contacts(model,
+                                        body_of_surface,
+                                        contacts,
+                                        contact_forces);
+      for (const auto &forces : contact_forces)
+        contributions.push_back(forces.get());
 
       // Boundary conditions: one constraint group per component.
       constraints =
@@ -690,10 +677,20 @@ namespace rubberdyn
     ExplicitSimulation::start_from(const PreloadState &state)
     {
       AssertThrow(state.history.size() == elements->history().size() &&
-                    state.shortenings.size() == elements->n_sections(),
+                    state.shortenings.size() == elements->n_sections() &&
+                    state.contact_states.size() == contacts.size(),
                   ExcMessage("The preload does not fit the elements"));
       elements->history() = state.history;
       elements->set_section_shortenings(state.shortenings);
+      // The contacts' tangential forces and reference points: the first
+      // explicit step continues the load path's friction state.
+      for (unsigned int c = 0; c < contacts.size(); ++c)
+        {
+          AssertThrow(state.contact_states[c].size() ==
+                        contacts[c]->state().size(),
+                      ExcMessage("The preload does not fit the contacts"));
+          contacts[c]->state() = state.contact_states[c];
+        }
       explicit_solver->set_initial_displacement(state.displacement);
     }
 
@@ -703,11 +700,15 @@ namespace rubberdyn
     ExplicitSimulation::read_preload(const std::string &directory,
                                      const std::string &parameters) const
     {
+      std::vector<std::size_t> contact_state_sizes;
+      for (const auto &contact : contacts)
+        contact_state_sizes.push_back(contact->state().size());
       return model::read_preload(directory,
                                  parameters,
                                  model.partitioner,
                                  elements->history().size(),
                                  elements->n_sections(),
+                                 contact_state_sizes,
                                  model.comm);
     }
 

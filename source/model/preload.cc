@@ -17,7 +17,8 @@ namespace rubberdyn
   {
     namespace
     {
-      constexpr char preload_magic[8] = "RDYNPL1";
+      // (2: with the contacts' friction states.)
+      constexpr char preload_magic[8] = "RDYNPL2";
 
       /** The entries only the explicit run reads. */
       bool
@@ -90,6 +91,8 @@ namespace rubberdyn
           binary_io::write_doubles(out,
                                    state.section_forces.data(),
                                    state.section_forces.size());
+          for (const std::vector<double> &contact : state.contact_states)
+            binary_io::write_doubles(out, contact.data(), contact.size());
           durable_files::write(new_directory + "/rank_" +
                                  std::to_string(rank) + ".bin",
                                out.str());
@@ -131,6 +134,7 @@ namespace rubberdyn
       const std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &partitioner,
       const std::size_t                                         history_size,
       const unsigned int                                        n_sections,
+      const std::vector<std::size_t>                           &contact_state_sizes,
       const MPI_Comm                                            comm)
     {
       const std::string entry = "Output/Restart from checkpoint";
@@ -205,6 +209,14 @@ namespace rubberdyn
                                   state.section_forces.data(),
                                   n_sections,
                                   "section forces");
+          for (const std::size_t size : contact_state_sizes)
+            {
+              state.contact_states.emplace_back(size);
+              binary_io::read_doubles(in,
+                                      state.contact_states.back().data(),
+                                      size,
+                                      "contact states");
+            }
         }
       catch (const InputError &e)
         {

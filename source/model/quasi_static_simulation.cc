@@ -2,6 +2,8 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/mixed_up_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
@@ -38,9 +40,6 @@ namespace rubberdyn
                            what + " (" + entry +
                            ") yet; use 'explicit', or remove it");
       };
-      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
-        refuse("the rigid surface '" + surface.name + "'",
-               "Rigid surfaces/Names");
       for (const Part &part : model.parts)
         {
           if (part.formulation == elements::Formulation::mixed_up &&
@@ -133,6 +132,20 @@ namespace rubberdyn
       std::vector<ForceContribution *> contributions;
       if (surface_loads)
         contributions.push_back(surface_loads.get());
+      // Rigid surfaces, each on its own body (rigid parts, which could
+      // carry one, are refused above).
+      std::vector<unsigned int> body_of_surface;
+      for (const RigidSurfaceDefinition &definition : model.rigid_surfaces)
+        {
+          body_of_surface.push_back(bodies.size());
+          bodies.push_back(definition.body);
+        }
+      setup::add_rigid_surface_contacts(model,
+                                        body_of_surface,
+                                        contacts,
+                                        contact_forces);
+      for (const auto &forces : contact_forces)
+        contributions.push_back(forces.get());
       history_nodes =
         std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
                                                     model.partitioner,
@@ -145,7 +158,17 @@ namespace rubberdyn
         contributions,
         time_integration.quasi_static,
         model.comm,
-        pretension_loads);
+        pretension_loads,
+        bodies,
+        bodies_follow_load_path());
+    }
+
+
+
+    bool
+    QuasiStaticSimulation::bodies_follow_load_path() const
+    {
+      return time_integration.scheme == "quasi-static";
     }
 
 
@@ -190,6 +213,8 @@ namespace rubberdyn
       state.shortenings    = newton->section_shortenings();
       state.section_forces = newton->section_forces();
       state.time           = newton->time();
+      for (const auto &contact : contacts)
+        state.contact_states.push_back(contact->state());
       return state;
     }
 
@@ -214,6 +239,23 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
+      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+        {
+          std::string free;
+          for (unsigned int d = 0; d < 3; ++d)
+            if (surface.body.moves_freely(d))
+              free += std::string(free.empty() ? "" : ", ") + "xyz"[d];
+          log << "  Rigid surface " << surface.name << ": "
+              << (!bodies_follow_load_path() ?
+                    "stands still on the load path (its motion is the "
+                    "explicit run's)" :
+                  free.empty() ?
+                    "follows its Velocity function over the pseudo-time" :
+                    "follows its Velocity function over the pseudo-time, "
+                    "held in its free directions (" +
+                      free + ": no inertia)")
+              << std::endl;
+        }
       for (unsigned int s = 0; s < model.pretension_sections.size(); ++s)
         {
           const PretensionSection &section = model.pretension_sections[s];
@@ -260,6 +302,10 @@ namespace rubberdyn
       for (const PretensionSection &section : model.pretension_sections)
         for (const std::string quantity : {"_force", "_shortening"})
           columns.push_back(section.name + quantity);
+      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+        for (const std::string quantity : {"_position", "_force"})
+          for (unsigned int d = 0; d < 3; ++d)
+            columns.push_back(surface.name + quantity + xyz[d]);
       for (const std::string &column : history_nodes->columns())
         columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
@@ -310,6 +356,17 @@ namespace rubberdyn
           {
             values.push_back(s.section_forces()[k]);
             values.push_back(s.section_shortenings()[k]);
+          }
+        // The surfaces' bodies, in the surfaces' order.
+        for (unsigned int b = 0; b < s.bodies().size(); ++b)
+          {
+            const RigidBody &body = s.bodies()[b];
+            const Point<3>   position =
+              body.reference_position + body.displacement;
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(position[d]);
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(s.body_forces()[b][d]);
           }
         history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);

@@ -2,12 +2,64 @@
 
 #include <rubberdyn/model/rigid_body.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace rubberdyn
 {
   namespace model
   {
+    Tensor<1, 3>
+    RigidBody::displacement_on_load_path(const double t) const
+    {
+      Tensor<1, 3> travel;
+      if (!prescribed_velocity || t == 0.)
+        return travel;
+      // Adaptive Simpson on [a, b] with the whole vector's error.
+      const std::function<Tensor<1, 3>(double,
+                                       double,
+                                       const Tensor<1, 3> &,
+                                       const Tensor<1, 3> &,
+                                       const Tensor<1, 3> &,
+                                       const Tensor<1, 3> &,
+                                       double,
+                                       unsigned int)>
+        simpson = [&](const double        a,
+                      const double        b,
+                      const Tensor<1, 3> &fa,
+                      const Tensor<1, 3> &fm,
+                      const Tensor<1, 3> &fb,
+                      const Tensor<1, 3> &whole,
+                      const double        tolerance,
+                      const unsigned int  depth) -> Tensor<1, 3> {
+        const double       m     = 0.5 * (a + b);
+        const Tensor<1, 3> flm   = prescribed_velocity(0.5 * (a + m));
+        const Tensor<1, 3> frm   = prescribed_velocity(0.5 * (m + b));
+        const Tensor<1, 3> left  = (m - a) / 6. * (fa + 4. * flm + fm);
+        const Tensor<1, 3> right = (b - m) / 6. * (fm + 4. * frm + fb);
+        const Tensor<1, 3> error = left + right - whole;
+        if (depth == 0 || error.norm() <= 15. * tolerance)
+          return left + right + error / 15.;
+        return simpson(a, m, fa, flm, fm, left, 0.5 * tolerance, depth - 1) +
+               simpson(m, b, fm, frm, fb, right, 0.5 * tolerance, depth - 1);
+      };
+      const Tensor<1, 3> f0 = prescribed_velocity(0.), f1 = prescribed_velocity(t),
+                         fm = prescribed_velocity(0.5 * t);
+      const Tensor<1, 3> coarse = t / 6. * (f0 + 4. * fm + f1);
+      // The tolerance from the size of the travel (a first estimate of it:
+      // the largest speed over the interval's three points times t).
+      const double scale =
+        std::max({f0.norm(), fm.norm(), f1.norm(), 1e-300}) * std::abs(t);
+      travel = simpson(0., t, f0, fm, f1, coarse, 1e-12 * scale, 40);
+      for (unsigned int d = 0; d < 3; ++d)
+        if (moves_freely(d))
+          travel[d] = 0.;
+      return travel;
+    }
+
+
+
     Tensor<2, 3>
     rotation_of_vector(const Tensor<1, 3> &theta)
     {

@@ -2,6 +2,8 @@
 
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/contact/rigid_surface_contact.h>
+#include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
@@ -169,6 +171,41 @@ namespace rubberdyn
                                where.str());
             }
         return n_cut;
+      }
+
+
+
+      void
+      add_rigid_surface_contacts(
+        const Model                                             &model,
+        const std::vector<unsigned int>                         &body_of_surface,
+        std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
+        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces)
+      {
+        AssertDimension(body_of_surface.size(), model.rigid_surfaces.size());
+        // The penalty stiffness s K A^2 / V takes the bulk modulus of the
+        // element under each face.
+        std::vector<double> bulk_modulus_by_material;
+        for (const Part &part : model.parts)
+          for (const types::material_id id : part.material_ids)
+            {
+              if (bulk_modulus_by_material.size() <= id)
+                bulk_modulus_by_material.resize(id + 1, 0.);
+              bulk_modulus_by_material[id] = part.law->bulk_modulus();
+            }
+        for (unsigned int s = 0; s < model.rigid_surfaces.size(); ++s)
+          {
+            const RigidSurfaceDefinition &definition = model.rigid_surfaces[s];
+            contacts.push_back(std::make_unique<contact::RigidSurfaceContact>());
+            contacts.back()->initialize(model.dof_handler,
+                                        model.partitioner,
+                                        definition.boundary_ids,
+                                        bulk_modulus_by_material,
+                                        definition.penalty_scale,
+                                        {definition.surface});
+            forces.push_back(std::make_unique<contact::RigidSurfaceForces>(
+              *contacts.back(), std::vector<unsigned int>{body_of_surface[s]}));
+          }
       }
     } // namespace setup
   }   // namespace model

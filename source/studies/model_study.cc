@@ -577,7 +577,11 @@ namespace rubberdyn
                             Patterns::Anything(),
                             "Prescribed velocity (mm/ms) in the directions "
                             "that are not free: three expressions of t (ms) "
-                            "separated by ';'.");
+                            "separated by ';'. In Scheme = quasi-static: mm "
+                            "per unit of pseudo-time, integrated over the "
+                            "load path (free directions stand still); in "
+                            "the load path of 'quasi-static then explicit' "
+                            "the surface stands still.");
           prm.declare_entry("Function constants", "", Patterns::Anything(),
                             "Constants used in Velocity function.");
           prm.declare_entry("Boundary ids", "", Patterns::Anything(),

@@ -921,11 +921,13 @@ namespace rubberdyn
 
           energy.kinetic  = sums[0];
           energy.internal = sums[1];
-          // A run that starts deformed (a preloaded state handed over from
-          // the quasi-static solver) starts with its stored energy.
-          if (!started)
-            energy.initial += energy.internal;
           energy.contact  = sums[2];
+          // A run that starts deformed (a preloaded state handed over from
+          // the quasi-static solver) starts with its stored energy: in the
+          // elements and in the penalty springs of contacts that are
+          // closed at the start.
+          if (!started)
+            energy.initial += energy.internal + energy.contact;
           // The viscous forces at t_n act on [t_{n-1/2}, t_{n+1/2}]: the
           // half on [t_n, t_{n+1/2}] belongs to the energies at t_{n+1}, as
           // the constraints' work does (the same time level as the kinetic

@@ -63,7 +63,13 @@ namespace rubberdyn
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm,
-        const std::vector<PretensionLoad>                        &sections);
+        const std::vector<PretensionLoad>                        &sections,
+        const std::vector<model::RigidBody>                      &bodies,
+        const bool                                                bodies_move);
+
+      /** Place the rigid bodies at pseudo-time @p t. */
+      void
+      place_bodies(const double t);
 
       /** What one residual evaluation gives. */
       struct Residual
@@ -89,6 +95,8 @@ namespace rubberdyn
          * others).
          */
         std::vector<double> section_force, section_residual;
+        /** Force of the solid on each rigid body (kN, all ranks). */
+        std::vector<Tensor<1, 3>> force_on_body;
       };
 
       /**
@@ -171,9 +179,13 @@ namespace rubberdyn
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
       std::vector<double>                                rigid_body_modes;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-      /** What the contributions see besides u and t: no velocity, no mass. */
+      /**
+       * What the contributions see besides u and t: no velocity, no mass,
+       * and the rigid bodies placed at t (place_bodies()).
+       */
       VectorType                    zero;
-      std::vector<model::RigidBody> no_bodies;
+      std::vector<model::RigidBody> bodies;
+      bool                          bodies_move;
 
       /** The pretension sections' loads. */
       std::vector<PretensionLoad> sections;
@@ -198,7 +210,9 @@ namespace rubberdyn
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm,
-      const std::vector<PretensionLoad>                        &sections)
+      const std::vector<PretensionLoad>                        &sections,
+      const std::vector<model::RigidBody>                      &bodies,
+      const bool                                                bodies_move)
       : dof_handler(dof_handler)
       , partitioner(partitioner)
       , elements(elements)
@@ -206,6 +220,8 @@ namespace rubberdyn
       , loads(loads)
       , settings(settings)
       , comm(comm)
+      , bodies(bodies)
+      , bodies_move(bodies_move)
       , sections(sections)
       , section_unknown(sections.size(), false)
       , section_target(sections.size(), 0.)
@@ -321,6 +337,16 @@ namespace rubberdyn
 
 
     void
+    QuasiStaticSolver::Implementation::place_bodies(const double t)
+    {
+      for (model::RigidBody &body : bodies)
+        body.displacement =
+          bodies_move ? body.displacement_on_load_path(t) : Tensor<1, 3>();
+    }
+
+
+
+    void
     QuasiStaticSolver::Implementation::set_section_targets(
       const double               t,
       const std::vector<double> &shortening,
@@ -357,9 +383,10 @@ namespace rubberdyn
       elements.compute_residual(u, r.force, result);
       // The loads' resisting forces (minus the loads) apart, for their norm.
       VectorType load_resistance(partitioner), external(partitioner);
-      const model::EvaluationPoint point{u, zero, zero, no_bodies, t};
-      model::ContributionResults   unused;
-      unused.reset(0, 0);
+      place_bodies(t);
+      const model::EvaluationPoint point{u, zero, zero, bodies, t};
+      model::ContributionResults   results;
+      results.reset(0, bodies.size());
       for (model::ForceContribution *load : loads)
         load->add_forces(
           point,
@@ -367,7 +394,11 @@ namespace rubberdyn
               model::ForceContribution::Accumulation::internal_ghosted ?
             load_resistance :
             external,
-          unused);
+          results);
+      r.force_on_body = results.force_on_body;
+      for (Tensor<1, 3> &force : r.force_on_body)
+        for (unsigned int d = 0; d < 3; ++d)
+          force[d] = Utilities::MPI::sum(force[d], comm);
       r.force.compress(VectorOperation::add);
       load_resistance.compress(VectorOperation::add);
       load_resistance -= external;
@@ -488,8 +519,10 @@ namespace rubberdyn
                                                       rhs,
                                                       predictor);
         });
-      // The loads' tangents (the pressures' load stiffness), block by block.
-      const model::EvaluationPoint         point{u, zero, zero, no_bodies, t};
+      // The loads' tangents (the pressures' load stiffness, contact),
+      // block by block.
+      place_bodies(t);
+      const model::EvaluationPoint         point{u, zero, zero, bodies, t};
       FullMatrix<double>                   block_matrix;
       Vector<double>                       block_rhs;
       std::vector<types::global_dof_index> block_global;
@@ -763,7 +796,9 @@ namespace rubberdyn
       const std::vector<model::ForceContribution *>            &loads,
       const parameters::QuasiStatic                            &settings,
       const MPI_Comm                                            comm,
-      const std::vector<PretensionLoad>                        &sections)
+      const std::vector<PretensionLoad>                        &sections,
+      const std::vector<model::RigidBody>                      &bodies,
+      const bool                                                bodies_move)
       : impl(std::make_unique<Implementation>(dof_handler,
                                               partitioner,
                                               elements,
@@ -771,7 +806,9 @@ namespace rubberdyn
                                               loads,
                                               settings,
                                               comm,
-                                              sections))
+                                              sections,
+                                              bodies,
+                                              bodies_move))
       , section_force(sections.size(), 0.)
       , shortening(sections.size(), 0.)
     {
@@ -795,8 +832,26 @@ namespace rubberdyn
 
 
 
+    const std::vector<model::RigidBody> &
+    QuasiStaticSolver::bodies() const
+    {
+      return impl->bodies;
+    }
+
+
+
     void
     QuasiStaticSolver::initialize()
+    {
+      evaluate_state();
+      for (model::ForceContribution *load : impl->loads)
+        load->accept_step();
+    }
+
+
+
+    void
+    QuasiStaticSolver::evaluate_state()
     {
       u.update_ghost_values();
       Implementation::Residual r;
@@ -835,6 +890,7 @@ namespace rubberdyn
       energy          = r.energy;
       energy_by_group = r.energy_by_group;
       section_force   = r.section_force;
+      body_force      = r.force_on_body;
     }
 
 
@@ -1056,7 +1112,7 @@ namespace rubberdyn
           // Reactions and energies of the converged state (this evaluation
           // writes the same new history as the last iteration's), then its
           // history becomes the start of the next step.
-          initialize();
+          evaluate_state();
           I.elements.accept_history();
           for (model::ForceContribution *load : I.loads)
             load->accept_step();

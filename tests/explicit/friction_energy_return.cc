@@ -102,6 +102,8 @@ main(int argc, char **argv)
       }
     f = 0.;
     contact.add_forces(u, pose, f, result);
+    // Every evaluation is a step taken (the friction state advances).
+    contact.accept();
     for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
       work -= 0.5 * (f_old.local_element(i) + f.local_element(i)) *
               (u.local_element(i) - u_old.local_element(i));

@@ -8,6 +8,7 @@
 
 #include <rubberdyn/base/vector.h>
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <vector>
@@ -131,6 +132,24 @@ namespace rubberdyn
      * The critical time step of a node of mass $m$ on its penalty spring is
      * $2\sqrt{m/k}$, or $2\sqrt{m/(n k)}$ while it touches n surfaces at
      * once; the explicit solver combines it with the elements'.
+     *
+     * The friction state is kept twice: the accepted state (of the last
+     * step taken) and the trial state of the last evaluation. add_forces()
+     * starts from the accepted one and writes the trial one, accept()
+     * makes the trial state current. The explicit solver evaluates once
+     * per step and accepts; the quasi-static solver evaluates many times
+     * (Newton iterations, line search) from the same accepted state and
+     * accepts the converged one, as a return mapping must.
+     *
+     * For the quasi-static solver add_tangents() gives the exact
+     * derivative of these forces (doc/theory.md, section 13), including
+     * the curvature of a cylinder and, with friction, the rotation of the
+     * old tangential force into the current tangent plane and the
+     * derivative of the Coulomb cone. A closed gap ($g \le 0$, also $g = 0$
+     * exactly) is active in the tangent: a body that rests on a surface
+     * without load at the start gets the surface's normal stiffness and,
+     * with friction, its sticking stiffness $k (1 - n \otimes n)$, so that
+     * a body held only by contact can be solved.
      */
     class RigidSurfaceContact
     {
@@ -164,6 +183,37 @@ namespace rubberdyn
                  ContactResult &                 result);
 
       /**
+       * Make the friction state of the last add_forces() the accepted one
+       * (no-op if there was no evaluation since the last accept()).
+       */
+      void
+      accept();
+
+      /**
+       * Receives the tangent of one node: the local indices of its x, y, z
+       * dofs and the 3 x 3 derivative of the resisting force (minus the
+       * contact force on the solid) with respect to its displacement
+       * (kN/mm).
+       */
+      using NodeTangent =
+        std::function<void(const unsigned int (&dofs)[3],
+                           const Tensor<2, 3> &K)>;
+
+      /**
+       * The exact derivative of the forces add_forces() computes at @p u
+       * and @p pose from the accepted friction state, node by node (this
+       * rank's nodes), for every node with a closed gap (g <= 0).
+       */
+      void
+      add_tangents(const VectorType               &u,
+                   const std::vector<SurfacePose> &pose,
+                   const NodeTangent              &add) const;
+
+      /** Whether any surface has friction (then the tangent is unsymmetric). */
+      bool
+      has_friction() const;
+
+      /**
        * Smallest stable time step of the penalty springs, 2 sqrt(m/k), for
        * the lumped masses @p mass.
        */
@@ -175,8 +225,9 @@ namespace rubberdyn
       n_nodes() const;
 
       /**
-       * The friction state (per node and surface: tangential force and the
-       * node's last position relative to the surface), for checkpoints.
+       * The accepted friction state (per node and surface: tangential force
+       * and the node's position relative to the surface at the last
+       * accepted evaluation), for checkpoints and the preload.
        */
       std::vector<double> &
       state();
@@ -192,21 +243,72 @@ namespace rubberdyn
         double stiffness;
       };
 
-      /** Gap (mm, negative: penetration) and unit normal into the solid. */
+      /**
+       * Gap (mm, negative: penetration) and unit normal into the solid at
+       * @p x (surface frame), and, if @p curvature is given, the
+       * derivative of the normal with respect to x (1/mm; zero for a
+       * plane).
+       */
       static void
       gap_and_normal(const RigidSurface &surface,
                      const Point<3> &    x,
                      double &            gap,
-                     Tensor<1, 3> &      normal);
+                     Tensor<1, 3> &      normal,
+                     Tensor<2, 3> *      curvature = nullptr);
+
+      /** The contact of one node with one surface (surface frame). */
+      struct NodeContact
+      {
+        /** Normal force k (-g) (kN, > 0 in contact). */
+        double normal_force = 0.;
+        /**
+         * The accepted tangential force turned into the current tangent
+         * plane, its magnitude kept (kN).
+         */
+        Tensor<1, 3> old_force;
+        /** Tangential motion since the accepted state (mm). */
+        Tensor<1, 3> increment;
+        /** The new tangential force (kN), on the Coulomb cone if slip. */
+        Tensor<1, 3> tangential_force;
+        /** The whole force on the solid, normal and tangential (kN). */
+        Tensor<1, 3> force;
+        bool         slip = false;
+      };
+
+      /**
+       * The force on a node at @p x (surface frame) with the gap @p gap
+       * and normal @p normal, from the accepted tangential force
+       * @p accepted_force and position @p accepted_position (NaN: none
+       * yet), and, if @p jacobian is given, its derivative with respect
+       * to x (needs @p curvature).
+       */
+      static void
+      node_contact(const RigidSurface &surface,
+                   const double        stiffness,
+                   const Point<3>     &x,
+                   const double        gap,
+                   const Tensor<1, 3> &normal,
+                   const Tensor<2, 3> &curvature,
+                   const Tensor<1, 3> &accepted_force,
+                   const Tensor<1, 3> &accepted_position,
+                   NodeContact        &contact,
+                   Tensor<2, 3>       *jacobian);
+
+      /** A node's position in the frame of a surface at @p pose. */
+      static Point<3>
+      relative_position(const SurfacePose &pose, const Point<3> &x);
 
       std::vector<Node>         nodes;
       std::vector<RigidSurface> surfaces;
       /**
        * Per node n and surface s, at [(n * n_surfaces + s) * 6]: the
        * tangential force (kN, 3) and the node's position relative to the
-       * surface's translation at the last evaluation (mm, 3).
+       * surface (its frame) (mm, 3); of the last accepted evaluation, and
+       * of the last evaluation.
        */
-      std::vector<double> friction_state;
+      std::vector<double> accepted_state, trial_state;
+      /** Whether add_forces() ran since the last accept(). */
+      bool trial_pending = false;
       /**
        * Number of surfaces each node penetrated at the last add_forces():
        * its springs act in parallel, which the stable step accounts for.

@@ -15,7 +15,9 @@ namespace rubberdyn
      * contribution: each surface moves with the translation of its rigid
      * body; the contact forces on the bodies, the penalty energy, the
      * friction dissipation, the penalty springs' stable step and the
-     * friction state in checkpoints.
+     * friction state in checkpoints. In the quasi-static solver: the
+     * exact tangent (RigidSurfaceContact::add_tangents()), the friction
+     * state accepted with each converged load step.
      */
     class RigidSurfaceForces : public model::ForceContribution
     {
@@ -42,6 +44,27 @@ namespace rubberdyn
       void
       accept_step() override;
 
+      bool
+      supports_implicit() const override;
+
+      /** Frictionless contact only (Coulomb's return mapping is not). */
+      bool
+      symmetric_tangent() const override;
+
+      void
+      add_tangents(const model::EvaluationPoint &point,
+                   const TangentBlock           &add) const override;
+
+      /**
+       * Force of the solid on the surfaces at the last evaluation (kN),
+       * this rank's nodes.
+       */
+      const ContactResult &
+      last_result() const
+      {
+        return contact_result;
+      }
+
       /**
        * Energy in this contact's penalty springs at the last evaluation
        * (J), this rank's nodes.
@@ -63,6 +86,10 @@ namespace rubberdyn
       load(std::istream &in) override;
 
     private:
+      /** Where the surfaces are: with their bodies in @p bodies. */
+      std::vector<SurfacePose>
+      poses(const std::vector<model::RigidBody> &bodies) const;
+
       RigidSurfaceContact &     contact;
       std::vector<unsigned int> body_of_surface;
       std::vector<SurfacePose>  pose;

@@ -36,6 +36,12 @@ namespace rubberdyn
       std::vector<double> shortenings;
       /** Force through each section (kN), for the log. */
       std::vector<double> section_forces;
+      /**
+       * The accepted friction state of each rigid surface's contact
+       * (contact::RigidSurfaceContact::state(): tangential forces and
+       * reference points of this rank's nodes).
+       */
+      std::vector<std::vector<double>> contact_states;
       /** Pseudo-time of the converged state. */
       double time = 0.;
     };
@@ -73,6 +79,8 @@ namespace rubberdyn
      * @param parameters The present model's preload text: it must be the
      *   one stored.
      * @param history_size, n_sections What the present elements hold.
+     * @param contact_state_sizes The size of each rigid surface contact's
+     *   state on this rank.
      * @throws InputError naming `Output/Restart from checkpoint` if there is
      *   none, it is damaged, it was written by another number of ranks, its
      *   parameters differ (naming the first entry that does) or its sizes
@@ -85,6 +93,7 @@ namespace rubberdyn
       const std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &partitioner,
       const std::size_t                                         history_size,
       const unsigned int                                        n_sections,
+      const std::vector<std::size_t>                           &contact_state_sizes,
       const MPI_Comm                                            comm);
   } // namespace model
 } // namespace rubberdyn

@@ -13,6 +13,11 @@
 
 namespace rubberdyn
 {
+  namespace contact
+  {
+    class RigidSurfaceContact;
+    class RigidSurfaceForces;
+  } // namespace contact
   namespace elements
   {
     class ImplicitElements;
@@ -73,7 +78,7 @@ namespace rubberdyn
       /**
        * Refuse, with an InputError naming `Time integration/Scheme` and the
        * offending entry, a model or settings the quasi-static scheme
-       * cannot run yet: rigid surfaces, rigid parts, velocity conditions,
+       * cannot run yet: rigid parts, velocity conditions,
        * initial velocities, gravity, mass scaling,
        * checkpoints and restarts.
        */
@@ -115,6 +120,14 @@ namespace rubberdyn
       log_model(std::ostream &log) const;
 
       /**
+       * Whether the rigid surfaces follow their Velocity function over
+       * the pseudo-time (Scheme = quasi-static), or stand still (the load
+       * path of a preload: their motion is the explicit run's).
+       */
+      bool
+      bodies_follow_load_path() const;
+
+      /**
        * Let the model's pretension sections cut @p hexes and set
        * pretension_loads and cut_elements.
        *
@@ -132,6 +145,10 @@ namespace rubberdyn
       std::unique_ptr<elements::ImplicitElements>             elements;
       std::unique_ptr<time_integration::KinematicConstraints> constraints;
       std::unique_ptr<SurfaceLoads>                           surface_loads;
+      /** The rigid surfaces' bodies, contacts and their contributions. */
+      std::vector<RigidBody>                                      bodies;
+      std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
+      std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  contact_forces;
       std::unique_ptr<postprocess::HistoryNodes>              history_nodes;
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
       /** Boundary condition and direction of each constraint group. */

@@ -101,6 +101,17 @@ namespace rubberdyn
       Tensor<2, 3>
       rotation_after(const double step) const;
 
+      /**
+       * Where the body is at pseudo-time @p t of a quasi-static load path
+       * (no inertia): in the directions it does not move freely, the
+       * integral of its prescribed velocity from 0 to t (mm; the Velocity
+       * function read as mm per unit pseudo-time), in its free directions
+       * zero (statics cannot place a free body that nothing loads).
+       * Adaptive Simpson quadrature to 1e-12 of the travel.
+       */
+      Tensor<1, 3>
+      displacement_on_load_path(const double t) const;
+
       /** The current position of the reference point (mm). */
       Point<3>
       current_reference_position() const

@@ -13,6 +13,11 @@ namespace rubberdyn
   {
     class KinematicConstraints;
   }
+  namespace contact
+  {
+    class RigidSurfaceContact;
+    class RigidSurfaceForces;
+  } // namespace contact
 
   namespace model
   {
@@ -78,6 +83,19 @@ namespace rubberdyn
       std::unique_ptr<SurfaceLoads>
       surface_loads(const Model               &model,
                     std::vector<unsigned int> &condition_of_load);
+
+      /**
+       * One contact per rigid surface of the model (its boundary ids,
+       * penalty scale and the bulk moduli of the parts that touch it),
+       * appended to @p contacts, and its force contribution carried by the
+       * body @p body_of_surface[s], appended to @p forces.
+       */
+      void
+      add_rigid_surface_contacts(
+        const Model                                             &model,
+        const std::vector<unsigned int>                         &body_of_surface,
+        std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
+        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces);
     } // namespace setup
   }   // namespace model
 } // namespace rubberdyn

@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <rubberdyn/base/vector.h>
+#include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 
 #include <functional>
@@ -30,7 +31,7 @@ namespace rubberdyn
   namespace model
   {
     class ForceContribution;
-  }
+  } // namespace model
 
   namespace time_integration
   {
@@ -147,6 +148,15 @@ namespace rubberdyn
      * methods; Wriggers 2008, section 7.2). A load step never steps over
      * a lock time.
      *
+     * Rigid surfaces (contact::RigidSurfaceForces among the contributions)
+     * are carried by rigid bodies that the load path places: at
+     * pseudo-time t each body is at
+     * model::RigidBody::displacement_on_load_path(t), or stands still
+     * (the bodies of a preload, whose motion is the explicit run's). A
+     * contribution's friction state starts from the state at t = 0
+     * (accepted by initialize()) and is accepted with every converged
+     * step.
+     *
      * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic laws:
      * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
      * near-null space holds the six rigid-body modes of the nodal
@@ -161,10 +171,15 @@ namespace rubberdyn
        * @param constraints The kinematic conditions: displacement groups
        *   follow their functions of t, velocity groups (fixed and symmetry
        *   conditions, whose velocity is zero) hold their dofs at zero.
-       * @param loads Further force contributions (the surface loads; later
-       *   contact), evaluated at the load step's end time with their
-       *   tangents (model::ForceContribution::add_tangents()); each must
-       *   support the implicit solver (an ExcMessage naming it otherwise).
+       * @param loads Further force contributions (the surface loads,
+       *   rigid-surface contact), evaluated at the load step's end time with
+       *   their tangents (model::ForceContribution::add_tangents()); each
+       *   must support the implicit solver (an ExcMessage naming it
+       *   otherwise).
+       * @param bodies The rigid bodies the contributions see (those of the
+       *   rigid surfaces), at their reference place.
+       * @param bodies_move Whether the bodies follow their load path
+       *   (else they stand still).
        */
       QuasiStaticSolver(
         const DoFHandler<3, 3>                                   &dof_handler,
@@ -174,7 +189,9 @@ namespace rubberdyn
         const std::vector<model::ForceContribution *>            &loads,
         const parameters::QuasiStatic                            &settings,
         const MPI_Comm                                            comm,
-        const std::vector<PretensionLoad>                        &sections = {});
+        const std::vector<PretensionLoad>                        &sections = {},
+        const std::vector<model::RigidBody>                      &bodies   = {},
+        const bool bodies_move = true);
 
       ~QuasiStaticSolver();
 
@@ -183,8 +200,9 @@ namespace rubberdyn
       linear_solver_name() const;
 
       /**
-       * Evaluate the state at t = 0 (forces, reactions, energy) without
-       * solving.
+       * Evaluate the state at the current time (forces, reactions, energy)
+       * without solving, and accept the contributions' state there (the
+       * friction state the first load step starts from).
        */
       void
       initialize();
@@ -267,6 +285,23 @@ namespace rubberdyn
         return shortening;
       }
 
+      /**
+       * The rigid bodies at the last converged state (their
+       * displacement).
+       */
+      const std::vector<model::RigidBody> &
+      bodies() const;
+
+      /**
+       * Force of the solid on each rigid body (kN, summed over the ranks),
+       * last converged state.
+       */
+      const std::vector<Tensor<1, 3>> &
+      body_forces() const
+      {
+        return body_force;
+      }
+
       /** The converged load steps so far. */
       const std::vector<LoadStepRecord> &
       steps() const
@@ -275,6 +310,13 @@ namespace rubberdyn
       }
 
     private:
+      /**
+       * Evaluate the state at the current time: reactions, energies,
+       * section and body forces.
+       */
+      void
+      evaluate_state();
+
       class Implementation;
       std::unique_ptr<Implementation> impl;
 
@@ -286,6 +328,7 @@ namespace rubberdyn
       std::vector<double>         energy_by_group;
       std::vector<LoadStepRecord> records;
       std::vector<double>         section_force, shortening;
+      std::vector<Tensor<1, 3>>   body_force;
     };
   } // namespace time_integration
 } // namespace rubberdyn
