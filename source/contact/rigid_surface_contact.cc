@@ -457,7 +457,7 @@ namespace rubberdyn
                   Tensor<2, 3>(-(p.rotation * jacobian *
                                  transpose(p.rotation))) :
                   Tensor<2, 3>(-jacobian);
-              add(node.dofs, K);
+              add(node.dofs, s, K);
             }
         }
     }

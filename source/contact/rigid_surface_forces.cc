@@ -99,6 +99,7 @@ namespace rubberdyn
       contact.add_tangents(point.displacement,
                            poses(point.bodies),
                            [&](const unsigned int (&node_dofs)[3],
+                               const unsigned int,
                                const Tensor<2, 3> &node_K) {
                              for (unsigned int i = 0; i < 3; ++i)
                                {
@@ -107,6 +108,37 @@ namespace rubberdyn
                                    K[3 * i + j] = node_K[i][j];
                                }
                              add(dofs, K);
+                           });
+    }
+
+
+
+    void
+    RigidSurfaceForces::add_body_motion_load(
+      const model::EvaluationPoint        &point,
+      const std::vector<model::RigidBody> &moved,
+      VectorType                          &load) const
+    {
+      // The force depends on the node's position relative to the surface,
+      // x - u_b: moving the surface by du_b at a fixed node changes the
+      // resisting force by -K du_b, i.e. the load on the solid by K du_b.
+      std::vector<Tensor<1, 3>> motion(body_of_surface.size());
+      for (unsigned int s = 0; s < body_of_surface.size(); ++s)
+        {
+          const unsigned int b = body_of_surface[s];
+          AssertThrow(!point.bodies[b].rotates() && !moved[b].rotates(),
+                      ExcMessage("The linearised motion of a rotating rigid "
+                                 "surface is not implemented"));
+          motion[s] = moved[b].displacement - point.bodies[b].displacement;
+        }
+      contact.add_tangents(point.displacement,
+                           poses(point.bodies),
+                           [&](const unsigned int (&dofs)[3],
+                               const unsigned int  surface,
+                               const Tensor<2, 3> &K) {
+                             const Tensor<1, 3> f = K * motion[surface];
+                             for (unsigned int d = 0; d < 3; ++d)
+                               load.local_element(dofs[d]) += f[d];
                            });
     }
 

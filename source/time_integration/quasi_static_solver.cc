@@ -67,9 +67,27 @@ namespace rubberdyn
         const std::vector<model::RigidBody>                      &bodies,
         const bool                                                bodies_move);
 
-      /** Place the rigid bodies at pseudo-time @p t. */
+      /**
+       * Place the rigid bodies at pseudo-time @p t (or at
+       * frozen_body_time, if set).
+       */
       void
       place_bodies(const double t);
+
+      /** Whether a rigid body moves from @p t_old to @p t_new. */
+      bool
+      bodies_move_between(const double t_old, const double t_new) const;
+
+      /**
+       * The rigid bodies' motion from @p t_old to @p t_new at fixed nodes,
+       * linearised about @p u (model::ForceContribution::
+       * add_body_motion_load()), added to the assembled right-hand side on
+       * the free dofs.
+       */
+      void
+      add_body_motion_load(const VectorType &u,
+                           const double      t_old,
+                           const double      t_new);
 
       /** What one residual evaluation gives. */
       struct Residual
@@ -186,6 +204,12 @@ namespace rubberdyn
       VectorType                    zero;
       std::vector<model::RigidBody> bodies;
       bool                          bodies_move;
+      /**
+       * If not NaN: the time at which place_bodies() puts the bodies
+       * whatever time it is asked for (the predictor's linearisation
+       * point).
+       */
+      double frozen_body_time = std::numeric_limits<double>::quiet_NaN();
 
       /** The pretension sections' loads. */
       std::vector<PretensionLoad> sections;
@@ -339,9 +363,55 @@ namespace rubberdyn
     void
     QuasiStaticSolver::Implementation::place_bodies(const double t)
     {
+      const double time = std::isnan(frozen_body_time) ? t : frozen_body_time;
       for (model::RigidBody &body : bodies)
         body.displacement =
-          bodies_move ? body.displacement_on_load_path(t) : Tensor<1, 3>();
+          bodies_move ? body.displacement_on_load_path(time) : Tensor<1, 3>();
+    }
+
+
+
+    bool
+    QuasiStaticSolver::Implementation::bodies_move_between(
+      const double t_old,
+      const double t_new) const
+    {
+      if (!bodies_move)
+        return false;
+      for (const model::RigidBody &body : bodies)
+        if (body.displacement_on_load_path(t_new) !=
+            body.displacement_on_load_path(t_old))
+          return true;
+      return false;
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::add_body_motion_load(
+      const VectorType &u,
+      const double      t_old,
+      const double      t_new)
+    {
+      frozen_body_time = std::numeric_limits<double>::quiet_NaN();
+      place_bodies(t_old);
+      std::vector<model::RigidBody> moved = bodies;
+      for (model::RigidBody &body : moved)
+        body.displacement = body.displacement_on_load_path(t_new);
+      const model::EvaluationPoint point{u, zero, zero, bodies, t_new};
+      VectorType                   load(partitioner);
+      for (const model::ForceContribution *contribution : loads)
+        contribution->add_body_motion_load(point, moved, load);
+      std::vector<types::global_dof_index> indices;
+      std::vector<double>                  values;
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        if (!constrained[i] && load.local_element(i) != 0.)
+          {
+            indices.push_back(partitioner->local_to_global(i));
+            values.push_back(load.local_element(i));
+          }
+      rhs.add(indices, values);
+      rhs.compress(VectorOperation::add);
     }
 
 
@@ -959,6 +1029,8 @@ namespace rubberdyn
             if (!I.section_unknown[s])
               delta_increment[s] = prescribed[s] - shortening[s];
           I.evaluate(u, shortening, t_new, r);
+          const bool surfaces_move =
+            I.bodies_move_between(current_time, t_new);
           std::string  reason;
           bool         converged    = false;
           double       first_energy = 0.;
@@ -970,12 +1042,28 @@ namespace rubberdyn
               unsigned int n_linear  = 0;
               try
                 {
-                  I.assemble(u, t_new, r, increment, predictor);
+                  if (predictor && surfaces_move)
+                    {
+                      // Linearised about the converged state, with the
+                      // surfaces' motion as a load: a node sticking to a
+                      // surface follows it, as a node on a moving
+                      // constraint does (the residual at the surfaces' new
+                      // places would have it slip at once).
+                      Implementation::Residual r_start;
+                      I.frozen_body_time = current_time;
+                      I.evaluate(u, shortening, t_new, r_start);
+                      I.assemble(u, t_new, r_start, increment, predictor);
+                      // (Also sets the bodies free again.)
+                      I.add_body_motion_load(u, current_time, t_new);
+                    }
+                  else
+                    I.assemble(u, t_new, r, increment, predictor);
                   n_linear = I.solve(
                     du, d_delta, increment, delta_increment, predictor);
                 }
               catch (const std::exception &e)
                 {
+                  I.frozen_body_time = std::numeric_limits<double>::quiet_NaN();
                   // (deal.II's NoConvergence has an empty what().)
                   const std::string what = e.what();
                   reason =

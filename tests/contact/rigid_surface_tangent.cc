@@ -134,6 +134,7 @@ namespace
     std::map<unsigned int, Tensor<2, 3>> blocks;
     std::map<unsigned int, std::array<unsigned int, 3>> dofs_of_node;
     contact.add_tangents(u1, pose, [&](const unsigned int (&dofs)[3],
+                                       const unsigned int,
                                        const Tensor<2, 3> &K) {
       blocks[dofs[0]] += K;
       dofs_of_node[dofs[0]] = {dofs[0], dofs[1], dofs[2]};
@@ -246,6 +247,7 @@ namespace
     std::map<double, unsigned int> nodes_of_stiffness;
     double                         deviation = 0.;
     contact.add_tangents(u, pose, [&](const unsigned int (&)[3],
+                                      const unsigned int,
                                       const Tensor<2, 3> &K) {
       const double k = K[0][0];
       ++nodes_of_stiffness[k];

@@ -190,13 +190,15 @@ namespace rubberdyn
       accept();
 
       /**
-       * Receives the tangent of one node: the local indices of its x, y, z
-       * dofs and the 3 x 3 derivative of the resisting force (minus the
-       * contact force on the solid) with respect to its displacement
-       * (kN/mm).
+       * Receives the tangent of one node against one surface: the local
+       * indices of its x, y, z dofs, the surface's index and the 3 x 3
+       * derivative of the resisting force (minus the contact force on the
+       * solid) with respect to the node's displacement (kN/mm). (With
+       * respect to a translation of the surface it is the negative.)
        */
       using NodeTangent =
         std::function<void(const unsigned int (&dofs)[3],
+                           const unsigned int  surface,
                            const Tensor<2, 3> &K)>;
 
       /**

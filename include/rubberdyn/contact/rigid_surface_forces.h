@@ -56,6 +56,16 @@ namespace rubberdyn
                    const TangentBlock           &add) const override;
 
       /**
+       * K_node times the translation of the node's surface, for every node
+       * with a closed gap: the surfaces' motion at fixed nodes, linearised.
+       * Bodies that rotate are not supported (ExcMessage).
+       */
+      void
+      add_body_motion_load(const model::EvaluationPoint        &point,
+                           const std::vector<model::RigidBody> &moved,
+                           VectorType &load) const override;
+
+      /**
        * Force of the solid on the surfaces at the last evaluation (kN),
        * this rank's nodes.
        */

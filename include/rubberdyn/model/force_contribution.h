@@ -198,6 +198,26 @@ namespace rubberdyn
         (void)add;
       }
 
+      /**
+       * For the implicit solver's predictor: add into @p load (owned
+       * entries) the linearised change of the forces on the solid that
+       * the rigid bodies' motion from their places in @p point to
+       * @p moved causes at fixed nodes, $-(\partial r/\partial q)\,\Delta q$
+       * (kN). Used as a moving constraint's prescribed increment is: the
+       * first iteration of a load step linearises about the converged
+       * state, so that a node sticking to a surface follows it. The
+       * default adds nothing: right for contributions that no body moves.
+       */
+      virtual void
+      add_body_motion_load(const EvaluationPoint        &point,
+                           const std::vector<RigidBody> &moved,
+                           VectorType                   &load) const
+      {
+        (void)point;
+        (void)moved;
+        (void)load;
+      }
+
       /** Write the contribution's state (history) for a checkpoint. */
       virtual void
       save(std::ostream &out) const

@@ -155,7 +155,11 @@ namespace rubberdyn
      * (the bodies of a preload, whose motion is the explicit run's). A
      * contribution's friction state starts from the state at t = 0
      * (accepted by initialize()) and is accepted with every converged
-     * step.
+     * step. A surface that moves in a load step is treated like a moving
+     * constraint: the first iteration linearises about the converged
+     * state with the bodies at their old places and takes their motion as
+     * a load (model::ForceContribution::add_body_motion_load()), so that
+     * nodes sticking to a surface follow it (doc/theory.md, 13.5).
      *
      * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic laws:
      * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
