@@ -49,9 +49,6 @@ namespace rubberdyn
                              "law of part '" +
                                part.name + "' (" + part.law->name() +
                                ") keeps a history; use 'F-bar'");
-          if (part.rigid)
-            refuse("the rigid part '" + part.name + "'",
-                   "Parts/" + part.name + "/Model");
           // (In 'quasi-static then explicit' they are the explicit run's.)
           if (time_integration.scheme == "quasi-static" &&
               (part.initial_velocity.norm() != 0. ||
@@ -132,14 +129,43 @@ namespace rubberdyn
       std::vector<ForceContribution *> contributions;
       if (surface_loads)
         contributions.push_back(surface_loads.get());
-      // Rigid surfaces, each on its own body (rigid parts, which could
-      // carry one, are refused above).
+      // Rigid parts stand still on the load path: their nodes are held
+      // (one group per direction, after the conditions' groups).
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].rigid)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const char *xyz[3] = {"/x", "/y", "/z"};
+              held_part_groups.push_back({p, d, constraints->n_groups()});
+              constraints->hold_cells("Parts/" + model.parts[p].name +
+                                        xyz[d],
+                                      model.parts[p].material_ids,
+                                      d);
+            }
+      // Rigid surfaces on their own bodies, or on a rigid part's (which
+      // stands still).
+      std::vector<unsigned int> body_of_part(model.parts.size(),
+                                             numbers::invalid_unsigned_int);
       std::vector<unsigned int> body_of_surface;
       for (const RigidSurfaceDefinition &definition : model.rigid_surfaces)
-        {
-          body_of_surface.push_back(bodies.size());
-          bodies.push_back(definition.body);
-        }
+        if (definition.rigid_part.empty())
+          {
+            body_of_surface.push_back(bodies.size());
+            bodies.push_back(definition.body);
+          }
+        else
+          {
+            const unsigned int p = model.part_index(definition.rigid_part);
+            if (body_of_part[p] == numbers::invalid_unsigned_int)
+              {
+                body_of_part[p] = bodies.size();
+                RigidBody body;
+                body.name = model.parts[p].name;
+                bodies.push_back(body);
+              }
+            body_of_surface.push_back(body_of_part[p]);
+          }
+      surface_body = body_of_surface;
       setup::add_rigid_surface_contacts(model,
                                         body_of_surface,
                                         contacts,
@@ -239,8 +265,21 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
+      for (const Part &part : model.parts)
+        if (part.rigid)
+          log << "  Rigid part " << part.name
+              << ": stands still on the load path (no inertia; its motion "
+                 "is the explicit run's)"
+              << std::endl;
       for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
         {
+          if (!surface.rigid_part.empty())
+            {
+              log << "  Rigid surface " << surface.name
+                  << ": stands still with the rigid part "
+                  << surface.rigid_part << std::endl;
+              continue;
+            }
           std::string free;
           for (unsigned int d = 0; d < 3; ++d)
             if (surface.body.moves_freely(d))
@@ -306,6 +345,10 @@ namespace rubberdyn
         for (const std::string quantity : {"_position", "_force"})
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(surface.name + quantity + xyz[d]);
+      for (const Part &part : model.parts)
+        if (part.rigid)
+          for (unsigned int d = 0; d < 3; ++d)
+            columns.push_back(part.name + "_force" + xyz[d]);
       for (const std::string &column : history_nodes->columns())
         columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
@@ -357,17 +400,37 @@ namespace rubberdyn
             values.push_back(s.section_forces()[k]);
             values.push_back(s.section_shortenings()[k]);
           }
-        // The surfaces' bodies, in the surfaces' order.
-        for (unsigned int b = 0; b < s.bodies().size(); ++b)
+        // The surfaces: their point where their body is, and the force of
+        // the solid on them (this rank's nodes, summed).
+        std::vector<Tensor<1, 3>> surface_force(model.rigid_surfaces.size());
+        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
+          for (unsigned int d = 0; d < 3; ++d)
+            surface_force[k][d] = Utilities::MPI::sum(
+              contact_forces[k]->last_result().force_on_plane[0][d],
+              model.comm);
+        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
           {
-            const RigidBody &body = s.bodies()[b];
-            const Point<3>   position =
-              body.reference_position + body.displacement;
+            const Point<3> position =
+              model.rigid_surfaces[k].surface.point +
+              s.bodies()[surface_body[k]].displacement;
             for (unsigned int d = 0; d < 3; ++d)
               values.push_back(position[d]);
             for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(s.body_forces()[b][d]);
+              values.push_back(surface_force[k][d]);
           }
+        // A rigid part: the force of the solid on it through its nodes
+        // (minus the reaction of its held nodes) and through its surfaces.
+        std::vector<Tensor<1, 3>> part_force(model.parts.size());
+        for (const HeldPartGroup &held : held_part_groups)
+          part_force[held.part][held.direction] -= s.reactions()[held.group];
+        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
+          if (!model.rigid_surfaces[k].rigid_part.empty())
+            part_force[model.part_index(model.rigid_surfaces[k].rigid_part)] +=
+              surface_force[k];
+        for (unsigned int p = 0; p < model.parts.size(); ++p)
+          if (model.parts[p].rigid)
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(part_force[p][d]);
         history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);
         if (root && output.echo_history)

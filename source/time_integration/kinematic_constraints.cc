@@ -160,7 +160,15 @@ namespace rubberdyn
                            ids_text(boundary_ids));
       groups.push_back(
         {name, kind, function, depends_on_position, moment_point, 0.});
+      add_entries(group, entries);
+    }
 
+
+
+    void
+    KinematicConstraints::add_entries(const unsigned int        group,
+                                      const std::vector<Entry> &entries)
+    {
       // A dof claimed before keeps its first group if both prescribe the
       // same motion (sampled at a few times); otherwise the input
       // contradicts itself.
@@ -197,7 +205,81 @@ namespace rubberdyn
         partitioner->get_mpi_communicator(), conflict);
       for (const std::string &c : conflicts)
         if (!c.empty())
-          throw InputError(name, c);
+          throw InputError(groups[group].name, c);
+    }
+
+
+
+    std::vector<KinematicConstraints::Entry>
+    KinematicConstraints::cell_entries(
+      const std::set<types::material_id> &material_ids,
+      const unsigned int                  direction,
+      const unsigned int                  group,
+      unsigned int                       &n_cells) const
+    {
+      const FiniteElement<3> &fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      const std::vector<Point<3>> unit_points =
+        fe.base_element(0).get_unit_support_points();
+      const MappingQ1<3>            mapping;
+      std::map<unsigned int, Entry> entries;
+      n_cells = 0;
+      // Ghost cells too: an owned node may belong to a neighbour's cell
+      // only.
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if ((cell->is_locally_owned() || cell->is_ghost()) &&
+            material_ids.count(cell->material_id()) > 0)
+          {
+            if (cell->is_locally_owned())
+              ++n_cells;
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const auto ci = fe.system_to_component_index(i);
+                if (ci.first != direction ||
+                    !partitioner->in_local_range(dof_indices[i]))
+                  continue;
+                Entry entry;
+                entry.dof   = partitioner->global_to_local(dof_indices[i]);
+                entry.group = group;
+                entry.X =
+                  mapping.transform_unit_to_real_cell(cell,
+                                                      unit_points[ci.second]);
+                for (unsigned int d = 0; d < 3; ++d)
+                  entry.node_dofs[d] = partitioner->global_to_local(
+                    dof_indices[fe.component_to_system_index(d, ci.second)]);
+                entries[entry.dof] = entry;
+              }
+          }
+      std::vector<Entry> result;
+      for (const auto &[dof, entry] : entries)
+        result.push_back(entry);
+      return result;
+    }
+
+
+
+    void
+    KinematicConstraints::hold_cells(
+      const std::string                  &name,
+      const std::set<types::material_id> &material_ids,
+      const unsigned int                  direction)
+    {
+      AssertThrow(direction < 3, ExcIndexRange(direction, 0, 3));
+      const unsigned int group = groups.size();
+      unsigned int       n_cells = 0;
+      const std::vector<Entry> entries =
+        cell_entries(material_ids, direction, group, n_cells);
+      if (Utilities::MPI::sum(n_cells, partitioner->get_mpi_communicator()) ==
+          0)
+        throw InputError(name, "no cell of the mesh has its material ids");
+      groups.push_back({name,
+                        Kind::velocity,
+                        [](const Point<3> &, double) { return 0.; },
+                        false,
+                        Point<3>(),
+                        0.});
+      add_entries(group, entries);
     }
 
 

@@ -113,8 +113,6 @@ namespace rubberdyn
          * others).
          */
         std::vector<double> section_force, section_residual;
-        /** Force of the solid on each rigid body (kN, all ranks). */
-        std::vector<Tensor<1, 3>> force_on_body;
       };
 
       /**
@@ -465,10 +463,7 @@ namespace rubberdyn
             load_resistance :
             external,
           results);
-      r.force_on_body = results.force_on_body;
-      for (Tensor<1, 3> &force : r.force_on_body)
-        for (unsigned int d = 0; d < 3; ++d)
-          force[d] = Utilities::MPI::sum(force[d], comm);
+
       r.force.compress(VectorOperation::add);
       load_resistance.compress(VectorOperation::add);
       load_resistance -= external;
@@ -633,6 +628,33 @@ namespace rubberdyn
       rhs.add(indices, values);
       matrix.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
+      // A constrained dof that no element touches (a held rigid part's
+      // nodes: its cells have no elements) has an empty row; give it a
+      // diagonal of the matrix's mean scale (its solution is overwritten).
+      {
+        double             sum = 0., count = 0.;
+        const unsigned int n_owned = partitioner->locally_owned_size();
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (!constrained[i])
+            {
+              sum += std::abs(
+                matrix.diag_element(partitioner->local_to_global(i)));
+              count += 1.;
+            }
+        sum   = Utilities::MPI::sum(sum, comm);
+        count = Utilities::MPI::sum(count, comm);
+        const double scale = count > 0. && sum > 0. ? sum / count : 1.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (constrained[i])
+            {
+              const types::global_dof_index row =
+                partitioner->local_to_global(i);
+              if (matrix.diag_element(row) == 0.)
+                matrix.set(row, row, scale);
+            }
+        // (Collective: every rank compresses, whether it set anything.)
+        matrix.compress(VectorOperation::insert);
+      }
 
       // The sections' border: k_s = K g_s, k^_s = K^T g_s, kappa_s.
       if (!sections.empty())
@@ -960,7 +982,6 @@ namespace rubberdyn
       energy          = r.energy;
       energy_by_group = r.energy_by_group;
       section_force   = r.section_force;
-      body_force      = r.force_on_body;
     }
 
 

@@ -78,7 +78,7 @@ namespace rubberdyn
       /**
        * Refuse, with an InputError naming `Time integration/Scheme` and the
        * offending entry, a model or settings the quasi-static scheme
-       * cannot run yet: rigid parts, velocity conditions,
+       * cannot run yet: velocity conditions,
        * initial velocities, gravity, mass scaling,
        * checkpoints and restarts.
        */
@@ -153,6 +153,14 @@ namespace rubberdyn
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
       /** Boundary condition and direction of each constraint group. */
       std::vector<unsigned int> condition_of_group, direction_of_group;
+      /** A constraint group holding a rigid part in one direction. */
+      struct HeldPartGroup
+      {
+        unsigned int part, direction, group;
+      };
+      std::vector<HeldPartGroup> held_part_groups;
+      /** The body (in `bodies`) of each rigid surface. */
+      std::vector<unsigned int> surface_body;
       /** Boundary condition of each of the surface loads. */
       std::vector<unsigned int> condition_of_load;
       /** How each pretension section is loaded, and its cut elements. */

@@ -111,6 +111,20 @@ namespace rubberdyn
       fix(const std::string &name, const types::boundary_id boundary_id);
 
       /**
+       * Hold every node of the cells with @p material_ids at zero
+       * displacement in @p direction (a group of zero velocity, named
+       * @p name): a rigid part that stands still on a quasi-static load
+       * path.
+       *
+       * @throws InputError naming @p name if no cell has one of the ids,
+       *   or if a node is already prescribed differently by another group.
+       */
+      void
+      hold_cells(const std::string                  &name,
+                 const std::set<types::material_id> &material_ids,
+                 const unsigned int                  direction);
+
+      /**
        * A symmetry plane: zero velocity in @p normal_direction on
        * @p boundary_id, whose faces must lie in one plane normal to that
        * axis (checked: otherwise an InputError naming @p name).
@@ -239,6 +253,26 @@ namespace rubberdyn
                        const unsigned int                  direction,
                        const unsigned int                  group,
                        std::vector<Point<3>> *             vertices) const;
+
+      /**
+       * The locally owned dofs of direction @p direction of the cells with
+       * @p material_ids (every node: vertices, and for FE_Q(2) edge, face
+       * and cell nodes), as entries of group @p group; sets @p n_cells to
+       * the number of such cells on this rank.
+       */
+      std::vector<Entry>
+      cell_entries(const std::set<types::material_id> &material_ids,
+                   const unsigned int                  direction,
+                   const unsigned int                  group,
+                   unsigned int                       &n_cells) const;
+
+      /**
+       * Add group @p group (already in `groups`) with its @p entries: a
+       * dof claimed before keeps its first group if both prescribe the
+       * same motion; otherwise an InputError naming the group.
+       */
+      void
+      add_entries(const unsigned int group, const std::vector<Entry> &entries);
 
       /** The value group @p g prescribes at @p X, time t. */
       double

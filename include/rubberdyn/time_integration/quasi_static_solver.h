@@ -296,16 +296,6 @@ namespace rubberdyn
       const std::vector<model::RigidBody> &
       bodies() const;
 
-      /**
-       * Force of the solid on each rigid body (kN, summed over the ranks),
-       * last converged state.
-       */
-      const std::vector<Tensor<1, 3>> &
-      body_forces() const
-      {
-        return body_force;
-      }
-
       /** The converged load steps so far. */
       const std::vector<LoadStepRecord> &
       steps() const
@@ -332,7 +322,6 @@ namespace rubberdyn
       std::vector<double>         energy_by_group;
       std::vector<LoadStepRecord> records;
       std::vector<double>         section_force, shortening;
-      std::vector<Tensor<1, 3>>   body_force;
     };
   } // namespace time_integration
 } // namespace rubberdyn
