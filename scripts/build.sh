@@ -13,7 +13,13 @@ BUILD_DIR=${RUBBERDYN_BUILD_DIR:-$SOURCE_DIR/build}
 JOBS=${RUBBERDYN_JOBS:-$(nproc)}
 ACTION=${1:-build}
 
-PACKAGES=(cmake make g++ lld libdeal.ii-dev numdiff ccache openmpi-bin perl)
+# libopenblas0-serial: an optimised BLAS/LAPACK (Debian's alternatives
+# system puts it before the reference BLAS). The quasi-static solver's
+# direct solver (MUMPS) spends most of its time in dgemm/dtrsm: 3.3 times
+# faster on bolted_plates.prm's load path (benchmarks/README.md). Serial:
+# the MPI ranks are the parallelism.
+PACKAGES=(cmake make g++ lld libdeal.ii-dev numdiff ccache openmpi-bin perl
+          libopenblas0-serial)
 
 install_missing_packages() {
   local missing=()
