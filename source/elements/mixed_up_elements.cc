@@ -142,8 +142,9 @@ namespace rubberdyn
           cell->get_dof_indices(dof_indices);
           Element e;
           e.group   = group->second;
-          e.cell_id = cell->id().to_string();
-          e.centre  = cell->center();
+          e.cell_id           = cell->id().to_string();
+          e.centre            = cell->center();
+          e.active_cell_index = cell->active_cell_index();
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
               const auto ci = fe.system_to_component_index(i);
@@ -402,6 +403,55 @@ namespace rubberdyn
           dilatation[q] = s.J_tilde[q];
           pressure[q]   = s.p_tilde[q];
         }
+    }
+
+
+
+    CellAverages
+    MixedUPElements::cell_averages(const VectorType  &u,
+                                   const unsigned int n_active_cells) const
+    {
+      CellAverages averages;
+      for (auto &component : averages.cauchy_stress)
+        component.assign(n_active_cells, 0.f);
+      averages.von_mises.assign(n_active_cells, 0.f);
+      averages.pressure.assign(n_active_cells, 0.f);
+      averages.jacobian.assign(n_active_cells, 0.f);
+      constexpr unsigned int row[6] = {0, 1, 2, 0, 0, 1};
+      constexpr unsigned int col[6] = {0, 1, 2, 1, 2, 2};
+      State                  s;
+      std::string            message;
+      for (const Element &e : elements)
+        {
+          // (A failing element, e.g. inverted, is left at zero.)
+          if (!evaluate(e, u.begin(), false, s, message))
+            continue;
+          double volume = 0., cauchy[6] = {}, mises = 0., p = 0., J = 0.;
+          for (unsigned int q = 0; q < q2_points; ++q)
+            {
+              // The stress the residual integrates, A = tau - p_tau 1 +
+              // J tilde p 1 (Kirchhoff), over J.
+              Tensor<2, 3> A = s.tau[q];
+              for (unsigned int d = 0; d < 3; ++d)
+                A[d][d] += s.J[q] * s.p_tilde[q] - s.p_tau[q];
+              const SymmetricTensor<2, 3> sigma =
+                symmetrize(A) / s.J[q];
+              const double w = e.JxW[q];
+              for (unsigned int k = 0; k < 6; ++k)
+                cauchy[k] += w * sigma[row[k]][col[k]];
+              mises += w * std::sqrt(1.5) * deviator(sigma).norm();
+              p -= w * trace(sigma) / 3.;
+              J += w * s.J[q];
+              volume += w;
+            }
+          const unsigned int cell = e.active_cell_index;
+          for (unsigned int k = 0; k < 6; ++k)
+            averages.cauchy_stress[k][cell] = cauchy[k] / volume;
+          averages.von_mises[cell] = mises / volume;
+          averages.pressure[cell]  = p / volume;
+          averages.jacobian[cell]  = J / volume;
+        }
+      return averages;
     }
   } // namespace elements
 } // namespace rubberdyn

@@ -443,29 +443,21 @@ namespace rubberdyn
             0.;
       };
 
-      // ParaView fields of the converged states (the F-bar and
-      // displacement elements' Q1 dofs): every Field output interval of
-      // pseudo-time, and always the last one, also of a run that fails.
-      const auto *hexes =
-        dynamic_cast<const elements::SolidHexElements *>(elements.get());
-      std::unique_ptr<postprocess::FieldOutput> fields;
-      if (hexes != nullptr)
-        fields = std::make_unique<postprocess::FieldOutput>(
-          output.directory, "solution", model.comm, output.field_output_format);
-      else if (root)
-        log << "  No field output for the mixed u-p element yet (its Q2 dofs); "
-               "the time history only"
-            << std::endl;
+      // ParaView fields of the converged states: every Field output
+      // interval of pseudo-time, and always the last one, also of a run
+      // that fails.
+      auto fields = std::make_unique<postprocess::FieldOutput>(
+        output.directory, "solution", model.comm, output.field_output_format);
       double     next_field = 0., last_field = -1.;
       const auto write_fields = [&]() {
-        if (!fields || s.time() == last_field)
+        if (s.time() == last_field)
           return;
         VectorType no_velocity(model.partitioner);
         fields->write(model.dof_handler,
                       s.displacement(),
                       no_velocity,
                       postprocess::solid_cell_data(model,
-                                                   *hexes,
+                                                   *elements,
                                                    s.displacement()),
                       s.time());
         last_field = s.time();
@@ -499,10 +491,8 @@ namespace rubberdyn
           throw std::runtime_error(
             "Quasi-static run failed: " + std::string(failure.what()) +
             " (its rows are in " + output.directory +
-            "/time_history.csv" +
-            (fields ? ", the last converged state in " + fields->index_file() :
-                      std::string()) +
-            ")");
+            "/time_history.csv, the last converged state in " +
+            fields->index_file() + ")");
         }
       if (root)
         {

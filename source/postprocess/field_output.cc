@@ -96,7 +96,9 @@ namespace rubberdyn
             dof_handler.get_triangulation().n_active_cells());
           rank_vector = rank;
           data_out.add_data_vector(rank_vector, "mpi_rank");
-          data_out.build_patches();
+          // Q2 (the mixed u-p element): each cell subdivided into 2^3, so
+          // ParaView sees the quadratic displacement.
+          data_out.build_patches(dof_handler.get_fe().degree);
 
           const unsigned int counter = records.size();
           const std::string  pvtu =
@@ -117,7 +119,7 @@ namespace rubberdyn
       // HDF5: deal.II writes the mesh and the nodal vectors; vertices shared
       // by cells of this rank are merged, which is exact for the continuous
       // Q1 displacement and velocity.
-      data_out.build_patches();
+      data_out.build_patches(dof_handler.get_fe().degree);
       DataOutBase::DataOutFilter filter(
         DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/true,
                                         /*xdmf_hdf5_output=*/true));

@@ -99,7 +99,7 @@ namespace rubberdyn
 
     std::vector<std::pair<std::string, std::vector<float>>>
     solid_cell_data(const model::Model               &model,
-                    const elements::SolidHexElements &elements,
+                    const elements::ImplicitElements &elements,
                     const VectorType                 &u)
     {
       const unsigned int n_active = model.triangulation.n_active_cells();

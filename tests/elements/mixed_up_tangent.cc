@@ -8,7 +8,10 @@
 // 3. the tangent is symmetric (the element is variational);
 // 4. in a homogeneous deformation the condensed fields are exact: tilde J =
 //    det F and tilde p = the law's Cauchy pressure at every Gauss point,
-//    and the residual of every interior node vanishes (a patch test).
+//    and the residual of every interior node vanishes (a patch test); the
+//    ParaView cell averages (cell_averages(), stored as float) are the
+//    law's Cauchy stress tau(F) / J, its pressure and det F to 1e-6
+//    relative.
 // Mesh: two distorted Q2 hexahedra (Triangulation 2x1x1, 135 dofs) with a
 // pre-deformation of 25 % compression, lateral expansion, shear and a
 // random perturbation of every dof. Laws: Yeoh with the reference study's
@@ -195,6 +198,32 @@ main(int argc, char **argv)
                                     std::abs(dilatation[q] / J - 1.),
                                     std::abs(pressure[q] / p - 1.)});
         }
+      // The ParaView cell averages (cell_averages()): in the homogeneous
+      // deformation every cell's Cauchy stress is the law's at F, tau / J,
+      // its pressure -tr(sigma)/3 and its J det F.
+      const Tensor<2, 3> sigma =
+        Tensor<2, 3>(response.kirchhoff_stress) / J;
+      const elements::CellAverages averages =
+        mixed.cell_averages(u_homogeneous,
+                            dof_handler.get_triangulation().n_active_cells());
+      const unsigned int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
+      double average_error = 0.;
+      for (unsigned int cell = 0; cell < averages.jacobian.size(); ++cell)
+        {
+          for (unsigned int k = 0; k < 6; ++k)
+            average_error =
+              std::max(average_error,
+                       std::abs(averages.cauchy_stress[k][cell] -
+                                sigma[row[k]][col[k]]) /
+                         sigma.norm());
+          average_error =
+            std::max({average_error,
+                      std::abs(averages.pressure[cell] + p) / sigma.norm(),
+                      std::abs(averages.jacobian[cell] / J - 1.)});
+        }
+      // (float output: 1e-6.)
+      check(average_error < 1e-6,
+            c.name + ": cell averages of the homogeneous deformation");
       const VectorType f_homogeneous(force(u_homogeneous));
       double           interior = 0.;
       const IndexSet   boundary = DoFTools::extract_boundary_dofs(dof_handler);
@@ -211,6 +240,8 @@ main(int argc, char **argv)
             << (gradient_error < 1e-7 * max_f ? "yes" : "no")
             << ", homogeneous fields exact: "
             << (field_error < 1e-12 ? "yes" : "no")
+            << ", cell averages = the law's stress to float precision: "
+            << (average_error < 1e-6 ? "yes" : "no")
             << ", interior residual zero: " << (interior < 1e-12 ? "yes" : "no")
             << std::endl;
       std::cerr << c.name << ": tangent error " << sci(relative)

@@ -109,6 +109,12 @@ namespace
     {
       return inner.has_history();
     }
+
+    elements::CellAverages
+    cell_averages(const VectorType &u, const unsigned int n) const override
+    {
+      return inner.cell_averages(u, n);
+    }
     void
     accept_history() override
     {

@@ -12,6 +12,19 @@ namespace rubberdyn
   {
     struct ElementStepResult;
 
+    /** Cell averages of the Gauss-point values, for output. */
+    struct CellAverages
+    {
+      /** Cauchy stress components xx, yy, zz, xy, xz, yz (GPa). */
+      std::vector<float> cauchy_stress[6];
+      /** Von Mises stress (GPa). */
+      std::vector<float> von_mises;
+      /** Pressure, positive in compression (GPa). */
+      std::vector<float> pressure;
+      /** Jacobian determinant J. */
+      std::vector<float> jacobian;
+    };
+
     /**
      * What the quasi-static Newton solver (time_integration::QuasiStaticSolver)
      * needs of an element layer: the residual (internal force at zero
@@ -38,6 +51,16 @@ namespace rubberdyn
       /** Number of element groups (parts). */
       virtual unsigned int
       n_groups() const = 0;
+
+      /**
+       * Cell averages of the Cauchy stress, von Mises stress, pressure and
+       * J at displacement @p u, one value per active cell in the order of
+       * the triangulation's active cell iterator (locally owned cells
+       * filled, the others zero): the ParaView fields.
+       */
+      virtual CellAverages
+      cell_averages(const VectorType  &u,
+                    const unsigned int n_active_cells) const = 0;
 
       /**
        * The internal force $f_{int}(u)$ (kN) at displacement @p u (ghosted,

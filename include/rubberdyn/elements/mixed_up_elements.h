@@ -149,6 +149,16 @@ namespace rubberdyn
                        std::array<double, n_q> &dilatation,
                        std::array<double, n_q> &pressure) const;
 
+      /**
+       * Cell averages over the Gauss points (weighted by the reference
+       * volume) of the Cauchy stress $\sigma = (\tau - p_\tau 1 + J \tilde
+       * p\, 1)/J$ of the three-field element, its von Mises stress and
+       * pressure, and of J.
+       */
+      CellAverages
+      cell_averages(const VectorType  &u,
+                    const unsigned int n_active_cells) const override;
+
     private:
       /** What one element keeps (reference configuration). */
       struct Element
@@ -167,6 +177,8 @@ namespace rubberdyn
         unsigned int group;
         /** Cell id and reference centre, for failure reports. */
         std::string cell_id;
+        /** The cell's active cell index (output). */
+        unsigned int active_cell_index;
         Point<3>    centre;
       };
 

@@ -480,18 +480,7 @@ namespace rubberdyn
                                  const double       *KT_g,
                                  const double        gKg)> &add) const override;
 
-      /** Cell averages of the Gauss-point values, for output. */
-      struct CellAverages
-      {
-        /** Cauchy stress components xx, yy, zz, xy, xz, yz (GPa). */
-        std::vector<float> cauchy_stress[6];
-        /** Von Mises stress (GPa). */
-        std::vector<float> von_mises;
-        /** Pressure, positive in compression (GPa). */
-        std::vector<float> pressure;
-        /** Jacobian determinant J. */
-        std::vector<float> jacobian;
-      };
+      using CellAverages = elements::CellAverages;
 
       /**
        * Cell averages at displacement @p u, one value per active cell in the
@@ -499,7 +488,8 @@ namespace rubberdyn
        * cells filled, the others zero).
        */
       CellAverages
-      cell_averages(const VectorType &u, const unsigned int n_active_cells) const;
+      cell_averages(const VectorType  &u,
+                    const unsigned int n_active_cells) const override;
 
       /** The history of all Gauss points, for checkpoints. */
       std::vector<double> &

@@ -19,6 +19,7 @@ namespace rubberdyn
   }
   namespace elements
   {
+    class ImplicitElements;
     class SolidHexElements;
   }
 
@@ -34,7 +35,7 @@ namespace rubberdyn
      */
     std::vector<std::pair<std::string, std::vector<float>>>
     solid_cell_data(const model::Model               &model,
-                    const elements::SolidHexElements &elements,
+                    const elements::ImplicitElements &elements,
                     const VectorType                 &u);
 
     /**
