@@ -423,12 +423,7 @@ namespace rubberdyn
     SolidHexElements::cell_averages(const VectorType & u,
                                     const unsigned int n_active_cells) const
     {
-      CellAverages averages;
-      for (auto &component : averages.cauchy_stress)
-        component.assign(n_active_cells, 0.f);
-      averages.von_mises.assign(n_active_cells, 0.f);
-      averages.pressure.assign(n_active_cells, 0.f);
-      averages.jacobian.assign(n_active_cells, 0.f);
+      CellAverages averages(n_active_cells);
       constexpr unsigned int row[6] = {0, 1, 2, 0, 0, 1};
       constexpr unsigned int col[6] = {0, 1, 2, 1, 2, 2};
       std::vector<double>            scratch;

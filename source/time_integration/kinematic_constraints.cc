@@ -40,6 +40,27 @@ namespace rubberdyn
 
 
 
+    KinematicConstraints::Entry
+    KinematicConstraints::node_entry(
+      const std::vector<types::global_dof_index> &dof_indices,
+      const unsigned int                          i,
+      const unsigned int                          group,
+      const Point<3>                             &X) const
+    {
+      const FiniteElement<3> &fe   = dof_handler.get_fe();
+      const unsigned int      node = fe.system_to_component_index(i).second;
+      Entry                   entry;
+      entry.dof   = partitioner->global_to_local(dof_indices[i]);
+      entry.group = group;
+      entry.X     = X;
+      for (unsigned int d = 0; d < 3; ++d)
+        entry.node_dofs[d] = partitioner->global_to_local(
+          dof_indices[fe.component_to_system_index(d, node)]);
+      return entry;
+    }
+
+
+
     std::vector<KinematicConstraints::Entry>
     KinematicConstraints::boundary_entries(
       const std::set<types::boundary_id> &boundary_ids,
@@ -76,19 +97,14 @@ namespace rubberdyn
                       vertices->push_back(cell->vertex(vertex));
                     if (quadratic)
                       continue;
-                    const types::global_dof_index dof =
-                      dof_indices[fe.component_to_system_index(direction,
-                                                               vertex)];
-                    if (!partitioner->in_local_range(dof))
-                      continue;
-                    Entry entry;
-                    entry.dof   = partitioner->global_to_local(dof);
-                    entry.group = group;
-                    entry.X     = cell->vertex(vertex);
-                    for (unsigned int d = 0; d < 3; ++d)
-                      entry.node_dofs[d] = partitioner->global_to_local(
-                        dof_indices[fe.component_to_system_index(d, vertex)]);
-                    entries[entry.dof] = entry;
+                    const unsigned int i =
+                      fe.component_to_system_index(direction, vertex);
+                    if (partitioner->in_local_range(dof_indices[i]))
+                      {
+                        const Entry entry =
+                          node_entry(dof_indices, i, group, cell->vertex(vertex));
+                        entries[entry.dof] = entry;
+                      }
                   }
                 // FE_Q(2): every node of the face (vertices, edge midpoints,
                 // face centre), at its support point: the nodes where a
@@ -102,19 +118,14 @@ namespace rubberdyn
                       if (ci.first != direction ||
                           !fe.has_support_on_face(i, face))
                         continue;
-                      const types::global_dof_index dof = dof_indices[i];
-                      if (!partitioner->in_local_range(dof))
+                      if (!partitioner->in_local_range(dof_indices[i]))
                         continue;
-                      Entry entry;
-                      entry.dof   = partitioner->global_to_local(dof);
-                      entry.group = group;
-                      entry.X     = mapping.transform_unit_to_real_cell(
-                        cell,
-                        unit_points[ci.second]);
-                      for (unsigned int d = 0; d < 3; ++d)
-                        entry.node_dofs[d] = partitioner->global_to_local(
-                          dof_indices[fe.component_to_system_index(d,
-                                                                   ci.second)]);
+                      const Entry entry = node_entry(
+                        dof_indices,
+                        i,
+                        group,
+                        mapping.transform_unit_to_real_cell(
+                          cell, unit_points[ci.second]));
                       entries[entry.dof] = entry;
                     }
               }
@@ -239,15 +250,12 @@ namespace rubberdyn
                 if (ci.first != direction ||
                     !partitioner->in_local_range(dof_indices[i]))
                   continue;
-                Entry entry;
-                entry.dof   = partitioner->global_to_local(dof_indices[i]);
-                entry.group = group;
-                entry.X =
+                const Entry entry = node_entry(
+                  dof_indices,
+                  i,
+                  group,
                   mapping.transform_unit_to_real_cell(cell,
-                                                      unit_points[ci.second]);
-                for (unsigned int d = 0; d < 3; ++d)
-                  entry.node_dofs[d] = partitioner->global_to_local(
-                    dof_indices[fe.component_to_system_index(d, ci.second)]);
+                                                      unit_points[ci.second]));
                 entries[entry.dof] = entry;
               }
           }

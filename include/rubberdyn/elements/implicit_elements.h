@@ -15,6 +15,16 @@ namespace rubberdyn
     /** Cell averages of the Gauss-point values, for output. */
     struct CellAverages
     {
+      /** All values zero for @p n_active_cells cells. */
+      explicit CellAverages(const unsigned int n_active_cells = 0)
+        : von_mises(n_active_cells, 0.f)
+        , pressure(n_active_cells, 0.f)
+        , jacobian(n_active_cells, 0.f)
+      {
+        for (std::vector<float> &component : cauchy_stress)
+          component.assign(n_active_cells, 0.f);
+      }
+
       /** Cauchy stress components xx, yy, zz, xy, xz, yz (GPa). */
       std::vector<float> cauchy_stress[6];
       /** Von Mises stress (GPa). */

@@ -244,6 +244,16 @@ namespace rubberdyn
       };
 
       /**
+       * The entry of group @p group for the cell dof @p i (of the cell's
+       * @p dof_indices, locally owned) whose node is at @p X.
+       */
+      Entry
+      node_entry(const std::vector<types::global_dof_index> &dof_indices,
+                 const unsigned int                          i,
+                 const unsigned int                          group,
+                 const Point<3>                             &X) const;
+
+      /**
        * The locally owned dofs of direction @p direction on the faces with
        * @p boundary_ids, as entries of group @p group; appends the
        * vertices of this rank's faces on them to @p vertices.
