@@ -135,10 +135,11 @@ namespace rubberdyn
         if (model.parts[p].rigid)
           for (unsigned int d = 0; d < 3; ++d)
             {
-              const char *xyz[3] = {"/x", "/y", "/z"};
+              // (Named after the entry that makes the part rigid: a
+              // condition on its nodes is refused naming it.)
               held_part_groups.push_back({p, d, constraints->n_groups()});
               constraints->hold_cells("Parts/" + model.parts[p].name +
-                                        xyz[d],
+                                        "/Model",
                                       model.parts[p].material_ids,
                                       d);
             }
