@@ -147,11 +147,10 @@ namespace rubberdyn
       // stands still).
       std::vector<unsigned int> body_of_part(model.parts.size(),
                                              numbers::invalid_unsigned_int);
-      std::vector<unsigned int> body_of_surface;
       for (const RigidSurfaceDefinition &definition : model.rigid_surfaces)
         if (definition.rigid_part.empty())
           {
-            body_of_surface.push_back(bodies.size());
+            surface_body.push_back(bodies.size());
             bodies.push_back(definition.body);
           }
         else
@@ -164,11 +163,10 @@ namespace rubberdyn
                 body.name = model.parts[p].name;
                 bodies.push_back(body);
               }
-            body_of_surface.push_back(body_of_part[p]);
+            surface_body.push_back(body_of_part[p]);
           }
-      surface_body = body_of_surface;
       setup::add_rigid_surface_contacts(model,
-                                        body_of_surface,
+                                        surface_body,
                                         contacts,
                                         contact_forces);
       for (const auto &forces : contact_forces)
@@ -403,12 +401,19 @@ namespace rubberdyn
           }
         // The surfaces: their point where their body is, and the force of
         // the solid on them (this rank's nodes, summed).
+        // (One reduction for all of them.)
+        std::vector<double> sums(3 * model.rigid_surfaces.size());
+        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
+          for (unsigned int d = 0; d < 3; ++d)
+            sums[3 * k + d] =
+              contact_forces[k]->last_result().force_on_plane[0][d];
+        Utilities::MPI::sum(ArrayView<const double>(sums),
+                            model.comm,
+                            ArrayView<double>(sums));
         std::vector<Tensor<1, 3>> surface_force(model.rigid_surfaces.size());
         for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
           for (unsigned int d = 0; d < 3; ++d)
-            surface_force[k][d] = Utilities::MPI::sum(
-              contact_forces[k]->last_result().force_on_plane[0][d],
-              model.comm);
+            surface_force[k][d] = sums[3 * k + d];
         for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
           {
             const Point<3> position =

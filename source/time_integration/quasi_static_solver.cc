@@ -67,10 +67,7 @@ namespace rubberdyn
         const std::vector<model::RigidBody>                      &bodies,
         const bool                                                bodies_move);
 
-      /**
-       * Place the rigid bodies at pseudo-time @p t (or at
-       * frozen_body_time, if set).
-       */
+      /** Place the rigid bodies where the load path has them at @p t. */
       void
       place_bodies(const double t);
 
@@ -128,22 +125,27 @@ namespace rubberdyn
 
       /**
        * f_int(u, delta) - f_ext(t) and its norms, with the section
-       * shortenings @p delta; u must have its ghosts updated.
+       * shortenings @p delta and the rigid bodies where the load path has
+       * them at @p body_time (t, or t_n in a step's predictor); u must
+       * have its ghosts updated.
        */
       void
       evaluate(const VectorType          &u,
                const std::vector<double> &delta,
                const double               t,
+               const double               body_time,
                Residual                  &r);
 
       /**
-       * Assemble the tangent at @p u and the right-hand side -r on the free
-       * dofs, with the prescribed increments @p increment of the
-       * constrained dofs (inhomogeneous elimination) if @p predictor.
+       * Assemble the tangent at @p u (the bodies at @p body_time) and the
+       * right-hand side -r on the free dofs, with the prescribed increments
+       * @p increment of the constrained dofs (inhomogeneous elimination) if
+       * @p predictor.
        */
       void
       assemble(const VectorType &u,
                const double      t,
+               const double      body_time,
                const Residual   &r,
                const VectorType &increment,
                const bool        predictor);
@@ -197,17 +199,11 @@ namespace rubberdyn
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
       /**
        * What the contributions see besides u and t: no velocity, no mass,
-       * and the rigid bodies placed at t (place_bodies()).
+       * and the rigid bodies (place_bodies()).
        */
       VectorType                    zero;
       std::vector<model::RigidBody> bodies;
       bool                          bodies_move;
-      /**
-       * If not NaN: the time at which place_bodies() puts the bodies
-       * whatever time it is asked for (the predictor's linearisation
-       * point).
-       */
-      double frozen_body_time = std::numeric_limits<double>::quiet_NaN();
 
       /** The pretension sections' loads. */
       std::vector<PretensionLoad> sections;
@@ -361,10 +357,9 @@ namespace rubberdyn
     void
     QuasiStaticSolver::Implementation::place_bodies(const double t)
     {
-      const double time = std::isnan(frozen_body_time) ? t : frozen_body_time;
       for (model::RigidBody &body : bodies)
         body.displacement =
-          bodies_move ? body.displacement_on_load_path(time) : Tensor<1, 3>();
+          bodies_move ? body.displacement_on_load_path(t) : Tensor<1, 3>();
     }
 
 
@@ -391,7 +386,6 @@ namespace rubberdyn
       const double      t_old,
       const double      t_new)
     {
-      frozen_body_time = std::numeric_limits<double>::quiet_NaN();
       place_bodies(t_old);
       std::vector<model::RigidBody> moved = bodies;
       for (model::RigidBody &body : moved)
@@ -442,6 +436,7 @@ namespace rubberdyn
       const VectorType          &u,
       const std::vector<double> &delta,
       const double               t,
+      const double               body_time,
       Residual                  &r)
     {
       if (!sections.empty())
@@ -451,10 +446,11 @@ namespace rubberdyn
       elements.compute_residual(u, r.force, result);
       // The loads' resisting forces (minus the loads) apart, for their norm.
       VectorType load_resistance(partitioner), external(partitioner);
-      place_bodies(t);
+      place_bodies(body_time);
       const model::EvaluationPoint point{u, zero, zero, bodies, t};
-      model::ContributionResults   results;
-      results.reset(0, bodies.size());
+      // (Room for the forces on the bodies, which the residual ignores.)
+      model::ContributionResults unused;
+      unused.reset(0, bodies.size());
       for (model::ForceContribution *load : loads)
         load->add_forces(
           point,
@@ -462,8 +458,7 @@ namespace rubberdyn
               model::ForceContribution::Accumulation::internal_ghosted ?
             load_resistance :
             external,
-          results);
-
+          unused);
       r.force.compress(VectorOperation::add);
       load_resistance.compress(VectorOperation::add);
       load_resistance -= external;
@@ -543,6 +538,7 @@ namespace rubberdyn
     void
     QuasiStaticSolver::Implementation::assemble(const VectorType &u,
                                                 const double      t,
+                                                const double      body_time,
                                                 const Residual   &r,
                                                 const VectorType &increment,
                                                 const bool        predictor)
@@ -586,7 +582,7 @@ namespace rubberdyn
         });
       // The loads' tangents (the pressures' load stiffness, contact),
       // block by block.
-      place_bodies(t);
+      place_bodies(body_time);
       const model::EvaluationPoint         point{u, zero, zero, bodies, t};
       FullMatrix<double>                   block_matrix;
       Vector<double>                       block_rhs;
@@ -631,29 +627,32 @@ namespace rubberdyn
       // A constrained dof that no element touches (a held rigid part's
       // nodes: its cells have no elements) has an empty row; give it a
       // diagonal of the matrix's mean scale (its solution is overwritten).
+      // (Models without such rows skip the scale and the second compress.)
       {
-        double             sum = 0., count = 0.;
-        const unsigned int n_owned = partitioner->locally_owned_size();
+        const unsigned int                   n_owned = partitioner->locally_owned_size();
+        std::vector<types::global_dof_index> empty_rows;
         for (unsigned int i = 0; i < n_owned; ++i)
-          if (!constrained[i])
-            {
-              sum += std::abs(
-                matrix.diag_element(partitioner->local_to_global(i)));
-              count += 1.;
-            }
-        sum   = Utilities::MPI::sum(sum, comm);
-        count = Utilities::MPI::sum(count, comm);
-        const double scale = count > 0. && sum > 0. ? sum / count : 1.;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (constrained[i])
-            {
-              const types::global_dof_index row =
-                partitioner->local_to_global(i);
-              if (matrix.diag_element(row) == 0.)
-                matrix.set(row, row, scale);
-            }
-        // (Collective: every rank compresses, whether it set anything.)
-        matrix.compress(VectorOperation::insert);
+          if (constrained[i] &&
+              matrix.diag_element(partitioner->local_to_global(i)) == 0.)
+            empty_rows.push_back(partitioner->local_to_global(i));
+        if (Utilities::MPI::logical_or(!empty_rows.empty(), comm))
+          {
+            double sum = 0., count = 0.;
+            for (unsigned int i = 0; i < n_owned; ++i)
+              if (!constrained[i])
+                {
+                  sum += std::abs(
+                    matrix.diag_element(partitioner->local_to_global(i)));
+                  count += 1.;
+                }
+            sum   = Utilities::MPI::sum(sum, comm);
+            count = Utilities::MPI::sum(count, comm);
+            const double scale = count > 0. && sum > 0. ? sum / count : 1.;
+            for (const types::global_dof_index row : empty_rows)
+              matrix.set(row, row, scale);
+            // (Collective: every rank, whether it set anything.)
+            matrix.compress(VectorOperation::insert);
+          }
       }
 
       // The sections' border: k_s = K g_s, k^_s = K^T g_s, kappa_s.
@@ -949,7 +948,7 @@ namespace rubberdyn
       Implementation::Residual r;
       std::vector<double>      unused;
       impl->set_section_targets(current_time, shortening, unused);
-      impl->evaluate(u, shortening, current_time, r);
+      impl->evaluate(u, shortening, current_time, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +
@@ -1049,7 +1048,7 @@ namespace rubberdyn
           for (unsigned int s = 0; s < shortening.size(); ++s)
             if (!I.section_unknown[s])
               delta_increment[s] = prescribed[s] - shortening[s];
-          I.evaluate(u, shortening, t_new, r);
+          I.evaluate(u, shortening, t_new, t_new, r);
           const bool surfaces_move =
             I.bodies_move_between(current_time, t_new);
           std::string  reason;
@@ -1071,20 +1070,18 @@ namespace rubberdyn
                       // constraint does (the residual at the surfaces' new
                       // places would have it slip at once).
                       Implementation::Residual r_start;
-                      I.frozen_body_time = current_time;
-                      I.evaluate(u, shortening, t_new, r_start);
-                      I.assemble(u, t_new, r_start, increment, predictor);
-                      // (Also sets the bodies free again.)
+                      I.evaluate(u, shortening, t_new, current_time, r_start);
+                      I.assemble(
+                        u, t_new, current_time, r_start, increment, predictor);
                       I.add_body_motion_load(u, current_time, t_new);
                     }
                   else
-                    I.assemble(u, t_new, r, increment, predictor);
+                    I.assemble(u, t_new, t_new, r, increment, predictor);
                   n_linear = I.solve(
                     du, d_delta, increment, delta_increment, predictor);
                 }
               catch (const std::exception &e)
                 {
-                  I.frozen_body_time = std::numeric_limits<double>::quiet_NaN();
                   // (deal.II's NoConvergence has an empty what().)
                   const std::string what = e.what();
                   reason =
@@ -1118,7 +1115,7 @@ namespace rubberdyn
                   for (unsigned int s = 0; s < shortening.size(); ++s)
                     delta_trial[s] +=
                       (I.section_unknown[s] ? alpha : 1.) * d_delta[s];
-                  I.evaluate(u_trial, delta_trial, t_new, r_trial);
+                  I.evaluate(u_trial, delta_trial, t_new, t_new, r_trial);
                   if (!r_trial.failed &&
                       (predictor || !s.line_search || trial == 6 ||
                        r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
