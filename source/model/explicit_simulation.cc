@@ -68,52 +68,12 @@ namespace rubberdyn
 
     namespace
     {
-      /**
-       * Lumped (row-sum) physical mass of each part's elements per dof
-       * (kg; ghosted, compressed): integral of rho N_a over the part.
-       */
-      std::vector<VectorType>
-      part_masses(const Model &model)
-      {
-        std::vector<VectorType> masses(model.parts.size());
-        for (VectorType &m : masses)
-          m.reinit(model.partitioner);
-        FEValues<3> fe_values(model.fe, QGauss<3>(2),
-                              update_values | update_JxW_values);
-        const unsigned int n_dofs = model.fe.n_dofs_per_cell();
-        std::vector<types::global_dof_index> dofs(n_dofs);
-        for (const auto &cell : model.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              const unsigned int p =
-                model.part_of_material_id(cell->material_id());
-              const double density = model.parts[p].law->density();
-              fe_values.reinit(cell);
-              cell->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const unsigned int component =
-                    model.fe.system_to_component_index(i).first;
-                  double m = 0.;
-                  for (const unsigned int q :
-                       fe_values.quadrature_point_indices())
-                    m += density *
-                         fe_values.shape_value_component(i, q, component) *
-                         fe_values.JxW(q);
-                  masses[p](dofs[i]) += m;
-                }
-            }
-        for (VectorType &m : masses)
-          m.compress(VectorOperation::add);
-        return masses;
-      }
-
-      constexpr const char *component_names[3] = {"x", "y", "z"};
+            constexpr const char *component_names[3] = {"x", "y", "z"};
 
       /**
        * The lumped mass of the rigid parts' cells (their elements compute
        * nothing, so they give no mass of their own): the row sums
-       * rho N_a of part_masses().
+       * rho N_a of setup::part_masses().
        */
       class RigidPartMass : public ForceContribution
       {
@@ -513,7 +473,7 @@ namespace rubberdyn
 
       std::vector<model::ForceContribution *> contributions = {
         element_forces.get()};
-      const std::vector<VectorType> mass_of_part = part_masses(model);
+      const std::vector<VectorType> mass_of_part = setup::part_masses(model);
       {
         VectorType rigid_mass(model.partitioner);
         bool       any_rigid = false;
@@ -690,6 +650,21 @@ namespace rubberdyn
                         contacts[c]->state().size(),
                       ExcMessage("The preload does not fit the contacts"));
           contacts[c]->state() = state.contact_states[c];
+        }
+      // The rigid parts the load path moved, at rest. The load path turns
+      // them about the same centre of mass c as this run's C (up to
+      // round-off): x = c + d + R (X - c) = C + d' + R (X - C) for
+      // d' = d + (1 - R) (c - C).
+      for (const RigidPartPose &pose : state.rigid_part_poses)
+        {
+          AssertThrow(pose.part < body_of_part.size() &&
+                        body_of_part[pose.part] != numbers::invalid_unsigned_int,
+                      ExcMessage("The preload's rigid parts do not fit"));
+          RigidBody         &body   = bodies[body_of_part[pose.part]];
+          const Tensor<1, 3> offset = pose.centre - body.reference_position;
+          body.displacement =
+            pose.displacement + offset - pose.rotation * offset;
+          body.rotation = pose.rotation;
         }
       explicit_solver->set_initial_displacement(state.displacement);
     }

@@ -17,8 +17,11 @@ namespace rubberdyn
   {
     namespace
     {
-      // (2: with the contacts' friction states.)
-      constexpr char preload_magic[8] = "RDYNPL2";
+      // (2: with the contacts' friction states; 3: with the poses of the
+      // rigid parts in equilibrium.)
+      constexpr char preload_magic[8] = "RDYNPL3";
+      /** Doubles per rigid part pose: part, centre, displacement, R. */
+      constexpr unsigned int pose_size = 16;
 
       /** The entries only the explicit run reads. */
       bool
@@ -93,6 +96,22 @@ namespace rubberdyn
                                    state.section_forces.size());
           for (const std::vector<double> &contact : state.contact_states)
             binary_io::write_doubles(out, contact.data(), contact.size());
+          // (Two records: their number, then the poses.)
+          const double n_poses = state.rigid_part_poses.size();
+          binary_io::write_doubles(out, &n_poses, 1);
+          std::vector<double> poses;
+          for (const RigidPartPose &pose : state.rigid_part_poses)
+            {
+              poses.push_back(pose.part);
+              for (unsigned int d = 0; d < 3; ++d)
+                poses.push_back(pose.centre[d]);
+              for (unsigned int d = 0; d < 3; ++d)
+                poses.push_back(pose.displacement[d]);
+              for (unsigned int d = 0; d < 3; ++d)
+                for (unsigned int e = 0; e < 3; ++e)
+                  poses.push_back(pose.rotation[d][e]);
+            }
+          binary_io::write_doubles(out, poses.data(), poses.size());
           durable_files::write(new_directory + "/rank_" +
                                  std::to_string(rank) + ".bin",
                                out.str());
@@ -216,6 +235,29 @@ namespace rubberdyn
                                       state.contact_states.back().data(),
                                       size,
                                       "contact states");
+            }
+          double n_poses = 0.;
+          binary_io::read_doubles(in, &n_poses, 1, "rigid part poses");
+          if (!(n_poses >= 0. && n_poses < 1e6))
+            throw CheckpointError("the number of rigid part poses is damaged");
+          std::vector<double> poses(pose_size * std::size_t(n_poses));
+          binary_io::read_doubles(in,
+                                  poses.data(),
+                                  poses.size(),
+                                  "rigid part poses");
+          for (std::size_t k = 0; k < std::size_t(n_poses); ++k)
+            {
+              const double  *values = &poses[pose_size * k];
+              RigidPartPose pose;
+              pose.part = static_cast<unsigned int>(values[0]);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  pose.centre[d]     = values[1 + d];
+                  pose.displacement[d] = values[4 + d];
+                  for (unsigned int e = 0; e < 3; ++e)
+                    pose.rotation[d][e] = values[7 + 3 * d + e];
+                }
+              state.rigid_part_poses.push_back(pose);
             }
         }
       catch (const InputError &e)

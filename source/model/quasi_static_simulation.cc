@@ -17,6 +17,7 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <ostream>
@@ -73,6 +74,22 @@ namespace rubberdyn
                                  "') does not take tractions and pressures "
                                  "yet; use 'F-bar' for this model");
         }
+      // The contact of a surface on a moving rigid part would need the
+      // contact's tangent with respect to the part's motion.
+      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
+        if (!surface.rigid_part.empty())
+          {
+            const Part &part =
+              model.parts[model.part_index(surface.rigid_part)];
+            if (part.quasi_static_equilibrium)
+              throw InputError(
+                "Parts/" + part.name + "/Quasi-static motion",
+                "'equilibrium' cannot move the rigid part '" + part.name +
+                  "' on the load path: it carries the rigid surface '" +
+                  surface.name + "' (Rigid surfaces/" + surface.name +
+                  "/Rigid part), whose contact does not take the part's "
+                  "motion into its tangent yet; use 'held'");
+          }
       if (model.gravity.norm() != 0.)
         refuse("gravity", "Model/Gravity");
       if (time_integration.mass_scaling_time_step > 0.)
@@ -129,20 +146,49 @@ namespace rubberdyn
       std::vector<ForceContribution *> contributions;
       if (surface_loads)
         contributions.push_back(surface_loads.get());
-      // Rigid parts stand still on the load path: their nodes are held
-      // (one group per direction, after the conditions' groups).
+      // Rigid parts: their nodes are constrained (one group per
+      // direction, after the conditions' groups). They stand still, or
+      // move with the part's pose, whose free directions are then
+      // unknowns of the solver.
+      std::vector<time_integration::RigidPartInEquilibrium> rigid_parts;
+      std::vector<VectorType>                               masses;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].rigid)
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              // (Named after the entry that makes the part rigid: a
-              // condition on its nodes is refused naming it.)
-              held_part_groups.push_back({p, d, constraints->n_groups()});
-              constraints->hold_cells("Parts/" + model.parts[p].name +
-                                        "/Model",
-                                      model.parts[p].material_ids,
-                                      d);
-            }
+          {
+            const Part &part = model.parts[p];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                // (Named after the entry that makes the part rigid: a
+                // condition on its nodes is refused naming it.)
+                held_part_groups.push_back({p, d, constraints->n_groups()});
+                constraints->hold_cells("Parts/" + part.name + "/Model",
+                                        part.material_ids,
+                                        d);
+              }
+            time_integration::RigidPartInEquilibrium unknowns;
+            unknowns.name         = part.name;
+            unknowns.material_ids = part.material_ids;
+            if (part.quasi_static_equilibrium)
+              {
+                if (masses.empty())
+                  masses = setup::part_masses(model);
+                unknowns.centre =
+                  setup::rigid_part_centre_of_mass(model, p, masses);
+              }
+            bool any              = false;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                unknowns.free[d]     = part.rigid_free_translation[d];
+                unknowns.free[3 + d] = part.rigid_free_rotation[d];
+                any = any || unknowns.free[d] || unknowns.free[3 + d];
+              }
+            if (part.quasi_static_equilibrium && any)
+              {
+                require_held_by_solid(p);
+                equilibrium_parts.push_back(p);
+                rigid_parts.push_back(unknowns);
+              }
+          }
       // Rigid surfaces on their own bodies, or on a rigid part's (which
       // stands still).
       std::vector<unsigned int> body_of_part(model.parts.size(),
@@ -185,7 +231,52 @@ namespace rubberdyn
         model.comm,
         pretension_loads,
         bodies,
-        bodies_follow_load_path());
+        bodies_follow_load_path(),
+        rigid_parts);
+    }
+
+
+
+    void
+    QuasiStaticSimulation::require_held_by_solid(const unsigned int p) const
+    {
+      // Mark the dofs of the deformable cells, then look for one among the
+      // part's (what holds a part in equilibrium: the elements at its
+      // nodes; a surface it carries is refused, a load on it holds
+      // nothing).
+      VectorType touched(model.partitioner);
+      std::vector<types::global_dof_index> dofs(model.fe.n_dofs_per_cell());
+      for (const auto &cell : model.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            !model.parts[model.part_of_material_id(cell->material_id())].rigid)
+          {
+            cell->get_dof_indices(dofs);
+            for (const types::global_dof_index dof : dofs)
+              touched.local_element(model.partitioner->global_to_local(dof)) =
+                1.;
+          }
+      touched.compress(VectorOperation::add);
+      bool held = false;
+      for (const auto &cell : model.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            model.part_of_material_id(cell->material_id()) == p && !held)
+          {
+            cell->get_dof_indices(dofs);
+            for (const types::global_dof_index dof : dofs)
+              held = held ||
+                     (model.partitioner->in_local_range(dof) &&
+                      touched.local_element(
+                        model.partitioner->global_to_local(dof)) > 0.);
+          }
+      if (!Utilities::MPI::logical_or(held, model.comm))
+        throw InputError(
+          "Parts/" + model.parts[p].name + "/Quasi-static motion",
+          "'equilibrium' needs something that holds the rigid part '" +
+            model.parts[p].name +
+            "' in its free directions, but it shares no node with a "
+            "deformable part: statics cannot place a body that nothing "
+            "holds; use 'held' (it stands still on the load path), or hold "
+            "its free directions (Rigid motion)");
     }
 
 
@@ -240,6 +331,14 @@ namespace rubberdyn
       state.time           = newton->time();
       for (const auto &contact : contacts)
         state.contact_states.push_back(contact->state());
+      for (unsigned int k = 0; k < equilibrium_parts.size(); ++k)
+        {
+          const RigidBody &pose = newton->rigid_part_poses()[k];
+          state.rigid_part_poses.push_back({equilibrium_parts[k],
+                                            pose.reference_position,
+                                            pose.displacement,
+                                            pose.rotation});
+        }
       return state;
     }
 
@@ -264,12 +363,32 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
-      for (const Part &part : model.parts)
-        if (part.rigid)
-          log << "  Rigid part " << part.name
-              << ": stands still on the load path (no inertia; its motion "
-                 "is the explicit run's)"
-              << std::endl;
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].rigid)
+          {
+            const auto equilibrium = std::find(equilibrium_parts.begin(),
+                                               equilibrium_parts.end(),
+                                               p);
+            log << "  Rigid part " << model.parts[p].name << ": ";
+            if (equilibrium == equilibrium_parts.end())
+              log << "stands still on the load path (no inertia; its motion "
+                     "is the explicit run's)"
+                  << std::endl;
+            else
+              {
+                const RigidBody &pose = newton->rigid_part_poses()
+                  [equilibrium - equilibrium_parts.begin()];
+                std::string free;
+                const char *names[6] = {"x", "y", "z", "rx", "ry", "rz"};
+                for (unsigned int d = 0; d < 6; ++d)
+                  if (d < 3 ? model.parts[p].rigid_free_translation[d] :
+                              model.parts[p].rigid_free_rotation[d - 3])
+                    free += std::string(free.empty() ? "" : ", ") + names[d];
+                log << "in equilibrium in " << free
+                    << " (unknowns of the load path), about its centre of mass "
+                    << pose.reference_position << std::endl;
+              }
+          }
       for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
         {
           if (!surface.rigid_part.empty())
@@ -348,6 +467,10 @@ namespace rubberdyn
         if (part.rigid)
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(part.name + "_force" + xyz[d]);
+      for (const unsigned int p : equilibrium_parts)
+        for (const std::string quantity : {"_position", "_rotation"})
+          for (unsigned int d = 0; d < 3; ++d)
+            columns.push_back(model.parts[p].name + quantity + xyz[d]);
       for (const std::string &column : history_nodes->columns())
         columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
@@ -437,6 +560,17 @@ namespace rubberdyn
           if (model.parts[p].rigid)
             for (unsigned int d = 0; d < 3; ++d)
               values.push_back(part_force[p][d]);
+        // The parts in equilibrium: their centre of mass and their
+        // rotation vector.
+        for (const RigidBody &pose : s.rigid_part_poses())
+          {
+            const Point<3>     position = pose.current_reference_position();
+            const Tensor<1, 3> rotation = rotation_vector(pose.rotation);
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(position[d]);
+            for (unsigned int d = 0; d < 3; ++d)
+              values.push_back(rotation[d]);
+          }
         history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);
         if (root && output.echo_history)

@@ -1,4 +1,7 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
@@ -9,6 +12,7 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -206,6 +210,93 @@ namespace rubberdyn
             forces.push_back(std::make_unique<contact::RigidSurfaceForces>(
               *contacts.back(), std::vector<unsigned int>{body_of_surface[s]}));
           }
+      }
+
+
+
+      std::vector<VectorType>
+      part_masses(const Model &model)
+      {
+        std::vector<VectorType> masses(model.parts.size());
+        for (VectorType &m : masses)
+          m.reinit(model.partitioner);
+        FEValues<3> fe_values(model.fe, QGauss<3>(2),
+                              update_values | update_JxW_values);
+        const unsigned int n_dofs = model.fe.n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_dofs);
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const unsigned int p =
+                model.part_of_material_id(cell->material_id());
+              const double density = model.parts[p].law->density();
+              fe_values.reinit(cell);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const unsigned int component =
+                    model.fe.system_to_component_index(i).first;
+                  double m = 0.;
+                  for (const unsigned int q :
+                       fe_values.quadrature_point_indices())
+                    m += density *
+                         fe_values.shape_value_component(i, q, component) *
+                         fe_values.JxW(q);
+                  masses[p](dofs[i]) += m;
+                }
+            }
+        for (VectorType &m : masses)
+          m.compress(VectorOperation::add);
+        return masses;
+      }
+
+
+
+      Point<3>
+      rigid_part_centre_of_mass(const Model                   &model,
+                                const unsigned int             p,
+                                const std::vector<VectorType> &masses)
+      {
+        // Each owned support point of the part's cells once: the nodal
+        // mass (of its x dof) times its position.
+        const FiniteElement<3> &fe       = model.fe;
+        const unsigned int      n_points = fe.n_dofs_per_cell() / 3;
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        std::set<types::global_dof_index>    seen;
+        double                               sums[4] = {0., 0., 0., 0.};
+        const MappingQ1<3>                   mapping;
+        for (const auto &cell : model.dof_handler.active_cell_iterators())
+          if ((cell->is_locally_owned() || cell->is_ghost()) &&
+              model.part_of_material_id(cell->material_id()) == p)
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int k = 0; k < n_points; ++k)
+                {
+                  const types::global_dof_index dof =
+                    dofs[fe.component_to_system_index(0, k)];
+                  if (!model.partitioner->in_local_range(dof) ||
+                      !seen.insert(dof).second)
+                    continue;
+                  double m = 0.;
+                  for (const VectorType &mass : masses)
+                    m += mass(dof);
+                  const Point<3> X = mapping.transform_unit_to_real_cell(
+                    cell, fe.base_element(0).unit_support_point(k));
+                  sums[0] += m;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    sums[1 + d] += m * X[d];
+                }
+            }
+        Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+                            model.comm,
+                            ArrayView<double>(sums, 4));
+        AssertThrow(sums[0] > 0.,
+                    ExcMessage("The rigid part '" + model.parts[p].name +
+                               "' has no mass"));
+        Point<3> centre;
+        for (unsigned int d = 0; d < 3; ++d)
+          centre[d] = sums[1 + d] / sums[0];
+        return centre;
       }
     } // namespace setup
   }   // namespace model

@@ -475,6 +475,18 @@ namespace rubberdyn
             "Initial angular velocity", "0, 0, 0", Patterns::Anything(),
             "For Model = Rigid: angular velocity at t = 0 (rad/ms) about "
             "its centre of mass, x, y, z, in its free rotations.");
+          prm.declare_entry(
+            "Quasi-static motion", "held", Patterns::Selection("held|equilibrium"),
+            "For Model = Rigid, on a quasi-static load path (Time "
+            "integration/Scheme = quasi-static, and the preload of "
+            "quasi-static then explicit): 'held' (it stands still: a drop "
+            "weight waits above the specimen, its motion is the explicit "
+            "run's), or 'equilibrium' (its free directions of Rigid motion "
+            "are unknowns, found so that the forces on it, of the solid "
+            "through its nodes and of the loads on its faces, have no "
+            "resultant (kN) and no moment (kN mm) about its centroid in "
+            "those directions; something must hold it in each of them). "
+            "The explicit run takes its place from there.");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -719,6 +731,8 @@ namespace rubberdyn
                 parse_vector(prm.get("Initial angular velocity"),
                              path + "/Initial angular velocity");
               materials::check_derived_constants(*part.law, path);
+              part.quasi_static_equilibrium =
+                prm.get("Quasi-static motion") == "equilibrium";
               if (rigid_motion == "fixed")
                 for (unsigned int d = 0; d < 3; ++d)
                   part.rigid_free_translation[d] =
@@ -755,6 +769,11 @@ namespace rubberdyn
                                  "is for Model = Rigid only");
               if (rigid_motion != "free")
                 throw InputError(path + "/Rigid motion",
+                                 "is for Model = Rigid only; this part's "
+                                 "Model is " +
+                                   prm.get("Model"));
+              if (prm.get("Quasi-static motion") != "held")
+                throw InputError(path + "/Quasi-static motion",
                                  "is for Model = Rigid only; this part's "
                                  "Model is " +
                                    prm.get("Model"));

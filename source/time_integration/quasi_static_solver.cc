@@ -21,6 +21,8 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
+#include "rigid_part_unknowns.h"
+
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
@@ -65,7 +67,8 @@ namespace rubberdyn
         const MPI_Comm                                            comm,
         const std::vector<PretensionLoad>                        &sections,
         const std::vector<model::RigidBody>                      &bodies,
-        const bool                                                bodies_move);
+        const bool                                                bodies_move,
+        const std::vector<RigidPartInEquilibrium>                &rigid_parts);
 
       /** Place the rigid bodies where the load path has them at @p t. */
       void
@@ -110,6 +113,11 @@ namespace rubberdyn
          * others).
          */
         std::vector<double> section_force, section_residual;
+        /**
+         * The rigid parts' equations T^T r (resultants and moments) in
+         * their free directions.
+         */
+        std::vector<double> part_residual;
       };
 
       /**
@@ -125,16 +133,18 @@ namespace rubberdyn
 
       /**
        * f_int(u, delta) - f_ext(t) and its norms, with the section
-       * shortenings @p delta and the rigid bodies where the load path has
-       * them at @p body_time (t, or t_n in a step's predictor); u must
-       * have its ghosts updated.
+       * shortenings @p delta, the rigid parts in equilibrium at @p poses
+       * (u holds their nodes already) and the rigid bodies where the load
+       * path has them at @p body_time (t, or t_n in a step's predictor);
+       * u must have its ghosts updated.
        */
       void
-      evaluate(const VectorType          &u,
-               const std::vector<double> &delta,
-               const double               t,
-               const double               body_time,
-               Residual                  &r);
+      evaluate(const VectorType                    &u,
+               const std::vector<double>           &delta,
+               const std::vector<model::RigidBody> &poses,
+               const double                         t,
+               const double                         body_time,
+               Residual                            &r);
 
       /**
        * Assemble the tangent at @p u (the bodies at @p body_time) and the
@@ -143,12 +153,13 @@ namespace rubberdyn
        * @p predictor.
        */
       void
-      assemble(const VectorType &u,
-               const double      t,
-               const double      body_time,
-               const Residual   &r,
-               const VectorType &increment,
-               const bool        predictor);
+      assemble(const VectorType                    &u,
+               const double                         t,
+               const double                         body_time,
+               const std::vector<model::RigidBody> &poses,
+               const Residual                      &r,
+               const VectorType                    &increment,
+               const bool                           predictor);
 
       /** Whether the assembled tangent is symmetric (CG may solve it). */
       bool
@@ -157,24 +168,32 @@ namespace rubberdyn
       /**
        * Solve the assembled (bordered) system; the correction goes to
        * @p du (owned entries, constrained dofs set to @p increment if
-       * @p predictor, else zero) and the sections' to @p d_delta (the
-       * prescribed ones get @p delta_increment if @p predictor, else
-       * zero). Returns the linear iterations (0 for the direct solver).
+       * @p predictor, else zero; a rigid part's nodes get its linearised
+       * motion), the sections' to @p d_delta (the prescribed ones get
+       * @p delta_increment if @p predictor, else zero) and the rigid parts'
+       * to @p d_part, from their @p poses. Returns the linear iterations
+       * (0 for the direct solver).
+       *
+       * @throws QuasiStaticFailure if a rigid part in equilibrium has no
+       *   stiffness in a free direction.
        */
       unsigned int
-      solve(VectorType                &du,
-            std::vector<double>       &d_delta,
-            const VectorType          &increment,
-            const std::vector<double> &delta_increment,
-            const bool                 predictor);
+      solve(VectorType                          &du,
+            std::vector<double>                 &d_delta,
+            std::vector<double>                 &d_part,
+            const std::vector<model::RigidBody> &poses,
+            const VectorType                    &increment,
+            const std::vector<double>           &delta_increment,
+            const bool                           predictor);
 
       /**
-       * |du . rhs| over the free dofs and the force-controlled sections
-       * (all ranks).
+       * |du . rhs| over the free dofs, the force-controlled sections and
+       * the rigid parts' free directions (all ranks).
        */
       double
       energy_increment(const VectorType          &du,
-                       const std::vector<double> &d_delta) const;
+                       const std::vector<double> &d_delta,
+                       const std::vector<double> &d_part) const;
 
       const DoFHandler<3, 3>                            &dof_handler;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
@@ -216,6 +235,22 @@ namespace rubberdyn
        */
       std::vector<VectorType> section_column, section_row;
       std::vector<double>     section_diagonal, section_rhs;
+
+      /** The rigid parts in equilibrium (null if there are none). */
+      std::unique_ptr<RigidPartUnknowns> parts;
+      /**
+       * From the last assemble(): k_j = K g_j, k^_j = K^T g_j of their
+       * modes (ghosted, compressed), g_j^T K g_j alone (the stiffness,
+       * whose absence makes the system singular), and -T^T r.
+       */
+      std::vector<VectorType> part_column, part_row;
+      std::vector<double>     part_stiffness, part_rhs;
+      /**
+       * The bordered block of all bordered unknowns (the sections, then
+       * the parts' directions): g_k^T K g_l, with the parts' geometric
+       * stiffness.
+       */
+      FullMatrix<double> border;
     };
 
 
@@ -230,7 +265,8 @@ namespace rubberdyn
       const MPI_Comm                                            comm,
       const std::vector<PretensionLoad>                        &sections,
       const std::vector<model::RigidBody>                      &bodies,
-      const bool                                                bodies_move)
+      const bool                                                bodies_move,
+      const std::vector<RigidPartInEquilibrium>                &rigid_parts)
       : dof_handler(dof_handler)
       , partitioner(partitioner)
       , elements(elements)
@@ -291,6 +327,24 @@ namespace rubberdyn
             homogeneous.add_line(partitioner->local_to_global(i));
           }
       homogeneous.close();
+
+      if (!rigid_parts.empty())
+        {
+          parts = std::make_unique<RigidPartUnknowns>(dof_handler,
+                                                      partitioner,
+                                                      rigid_parts,
+                                                      comm);
+          for (unsigned int i = 0; i < n_local; ++i)
+            AssertThrow(!parts->contains(i) || constrained[i],
+                        ExcMessage("A rigid part's node is not constrained"));
+          part_column.resize(parts->n_unknowns());
+          part_row.resize(parts->n_unknowns());
+          for (unsigned int j = 0; j < parts->n_unknowns(); ++j)
+            {
+              part_column[j].reinit(partitioner);
+              part_row[j].reinit(partitioner);
+            }
+        }
 
       DynamicSparsityPattern dsp(relevant);
       DoFTools::make_sparsity_pattern(dof_handler, dsp, homogeneous, false);
@@ -433,11 +487,12 @@ namespace rubberdyn
 
     void
     QuasiStaticSolver::Implementation::evaluate(
-      const VectorType          &u,
-      const std::vector<double> &delta,
-      const double               t,
-      const double               body_time,
-      Residual                  &r)
+      const VectorType                    &u,
+      const std::vector<double>           &delta,
+      const std::vector<model::RigidBody> &poses,
+      const double                         t,
+      const double                         body_time,
+      Residual                            &r)
     {
       if (!sections.empty())
         elements.set_section_shortenings(delta);
@@ -504,6 +559,20 @@ namespace rubberdyn
           }
         else
           sums[1] += std::pow(r.section_force[s], 2);
+      // The rigid parts' resultants (kN) and moments, the latter over the
+      // part's size to be forces too.
+      r.part_residual.clear();
+      if (parts)
+        {
+          parts->set_linearisation_point(u, poses);
+          r.part_residual = parts->project(r.force);
+          for (unsigned int j = 0; j < r.part_residual.size(); ++j)
+            sums[0] += std::pow(r.part_residual[j] /
+                                  (parts->is_rotation(j) ?
+                                     parts->length_scale(j) :
+                                     1.),
+                                2);
+        }
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
       r.load_norm     = std::sqrt(sums[2]);
@@ -536,15 +605,29 @@ namespace rubberdyn
 
 
     void
-    QuasiStaticSolver::Implementation::assemble(const VectorType &u,
-                                                const double      t,
-                                                const double      body_time,
-                                                const Residual   &r,
-                                                const VectorType &increment,
-                                                const bool        predictor)
+    QuasiStaticSolver::Implementation::assemble(
+      const VectorType                    &u,
+      const double                         t,
+      const double                         body_time,
+      const std::vector<model::RigidBody> &poses,
+      const Residual                      &r,
+      const VectorType                    &increment,
+      const bool                           predictor)
     {
       matrix = 0.;
       rhs    = 0.;
+      // The rigid parts' borders, block by block below (before the
+      // constraints remove their nodes' rows and columns).
+      if (parts)
+        {
+          parts->set_linearisation_point(u, poses);
+          parts->clear_blocks();
+          for (unsigned int j = 0; j < parts->n_unknowns(); ++j)
+            {
+              part_column[j] = 0.;
+              part_row[j]    = 0.;
+            }
+        }
       // The constraints of this assembly: the prescribed increments as
       // inhomogeneities in the predictor, none after.
       AffineConstraints<double> step_constraints(relevant);
@@ -573,6 +656,8 @@ namespace rubberdyn
                 cell_matrix(i, j) = K[n * i + j];
             }
           cell_rhs = 0.;
+          if (parts)
+            parts->add_block(dofs, n, K, part_column, part_row);
           step_constraints.distribute_local_to_global(cell_matrix,
                                                       cell_rhs,
                                                       global,
@@ -602,6 +687,8 @@ namespace rubberdyn
                 for (unsigned int j = 0; j < n; ++j)
                   block_matrix(i, j) = K[n * i + j];
               }
+            if (parts)
+              parts->add_block(dofs.data(), n, K.data(), part_column, part_row);
             step_constraints.distribute_local_to_global(block_matrix,
                                                         block_rhs,
                                                         block_global,
@@ -688,17 +775,62 @@ namespace rubberdyn
                               comm,
                               ArrayView<double>(section_diagonal));
         }
+
+      // The bordered block: the sections' diagonal, the parts' g^T K g
+      // with their geometric stiffness, and the couplings between the two.
+      const unsigned int n_sections = sections.size();
+      const unsigned int n_parts    = parts ? parts->n_unknowns() : 0;
+      border.reinit(n_sections + n_parts, n_sections + n_parts);
+      for (unsigned int s = 0; s < n_sections; ++s)
+        border(s, s) = section_diagonal[s];
+      if (parts)
+        {
+          for (unsigned int j = 0; j < n_parts; ++j)
+            {
+              part_column[j].compress(VectorOperation::add);
+              part_row[j].compress(VectorOperation::add);
+              // Column j of g_k^T K g_j: the modes' components of K g_j.
+              const std::vector<double> column = parts->project(part_column[j]);
+              for (unsigned int k = 0; k < n_parts; ++k)
+                border(n_sections + k, n_sections + j) = column[k];
+            }
+          part_stiffness.resize(n_parts);
+          for (unsigned int j = 0; j < n_parts; ++j)
+            part_stiffness[j] = border(n_sections + j, n_sections + j);
+          FullMatrix<double> geometric(n_parts, n_parts);
+          parts->add_geometric_stiffness(r.force, geometric);
+          for (unsigned int k = 0; k < n_parts; ++k)
+            for (unsigned int j = 0; j < n_parts; ++j)
+              border(n_sections + k, n_sections + j) += geometric(k, j);
+          for (unsigned int s = 0; s < n_sections; ++s)
+            {
+              // g_j^T K g_s = g_j . k_s and g_s^T K g_j = g_j . k^_s.
+              const std::vector<double> by_column =
+                parts->project(section_column[s]);
+              const std::vector<double> by_row = parts->project(section_row[s]);
+              for (unsigned int j = 0; j < n_parts; ++j)
+                {
+                  border(n_sections + j, s) = by_column[j];
+                  border(s, n_sections + j) = by_row[j];
+                }
+            }
+          part_rhs = r.part_residual;
+          for (double &value : part_rhs)
+            value = -value;
+        }
     }
 
 
 
     unsigned int
     QuasiStaticSolver::Implementation::solve(
-      VectorType                &du,
-      std::vector<double>       &d_delta,
-      const VectorType          &increment,
-      const std::vector<double> &delta_increment,
-      const bool                 predictor)
+      VectorType                          &du,
+      std::vector<double>                 &d_delta,
+      std::vector<double>                 &d_part,
+      const std::vector<model::RigidBody> &poses,
+      const VectorType                    &increment,
+      const std::vector<double>           &delta_increment,
+      const bool                           predictor)
     {
       // One factorisation (or preconditioner) of K for every right-hand
       // side: -r, then each section's k_s.
@@ -776,15 +908,39 @@ namespace rubberdyn
         du.local_element(i) = constrained[i] ?
                                 (predictor ? increment.local_element(i) : 0.) :
                                 solution[partitioner->local_to_global(i)];
+      // The bordered unknowns: the sections' shortenings, then the rigid
+      // parts' free directions, each with its column k_m = K g_m, its row
+      // k^_m = K^T g_m and its right-hand side.
       const unsigned int n_sections = sections.size();
+      const unsigned int n_parts    = parts ? parts->n_unknowns() : 0;
+      const unsigned int m          = n_sections + n_parts;
       d_delta.assign(n_sections, 0.);
-      if (n_sections == 0)
+      d_part.assign(n_parts, 0.);
+      if (m == 0)
         return n_iter;
+      const auto column_of = [&](const unsigned int k) -> const VectorType & {
+        return k < n_sections ? section_column[k] :
+                                part_column[k - n_sections];
+      };
+      const auto row_of = [&](const unsigned int k) -> const VectorType & {
+        return k < n_sections ? section_row[k] : part_row[k - n_sections];
+      };
+      // A part's direction that nothing stiffens cannot be solved: say
+      // which, instead of a singular system's noise.
+      for (unsigned int j = 0; j < n_parts; ++j)
+        if (!(part_stiffness[j] > 0.))
+          throw QuasiStaticFailure(
+            parts->describe(j) +
+            " is an unknown of the equilibrium, but no element and no "
+            "contact holds it there (g^T K g = " +
+            short_number(part_stiffness[j]) +
+            "); hold that direction (Rigid motion) or let the part stand "
+            "still (Quasi-static motion = held)");
 
-      // b_s = K^{-1} k_s on the free dofs (zero on the constrained ones).
-      std::vector<VectorType>       b(n_sections);
-      TrilinosWrappers::MPI::Vector column(rhs), b_s(rhs);
-      for (unsigned int s = 0; s < n_sections; ++s)
+      // b_k = K^{-1} k_k on the free dofs (zero on the constrained ones).
+      std::vector<VectorType>       b(m);
+      TrilinosWrappers::MPI::Vector column(rhs), b_k(rhs);
+      for (unsigned int k = 0; k < m; ++k)
         {
           std::vector<types::global_dof_index> indices;
           std::vector<double>                  values;
@@ -793,24 +949,26 @@ namespace rubberdyn
             if (!constrained[i])
               {
                 indices.push_back(partitioner->local_to_global(i));
-                values.push_back(section_column[s].local_element(i));
+                values.push_back(column_of(k).local_element(i));
               }
           column.set(indices, values);
           column.compress(VectorOperation::insert);
-          n_iter += linear_solve(b_s, column);
-          b[s].reinit(partitioner);
+          n_iter += linear_solve(b_k, column);
+          b[k].reinit(partitioner);
           for (unsigned int i = 0; i < n_owned; ++i)
-            b[s].local_element(i) =
-              constrained[i] ? 0. : b_s[partitioner->local_to_global(i)];
+            b[k].local_element(i) =
+              constrained[i] ? 0. : b_k[partitioner->local_to_global(i)];
         }
-      // The prescribed shortening increments, then the force-controlled
-      // ones from k^_s . (a - sum_t b_t dd_t) + kappa_s dd_s = -r_s.
+      // The prescribed shortening increments; then the unknowns (the
+      // force-controlled sections, the parts) from
+      // k^_k . (a - sum_l b_l dd_l) + sum_l D_kl dd_l = rhs_k.
+      std::vector<double>       dd(m, 0.);
       std::vector<unsigned int> unknown;
-      for (unsigned int s = 0; s < n_sections; ++s)
-        if (section_unknown[s])
-          unknown.push_back(s);
+      for (unsigned int k = 0; k < m; ++k)
+        if (k >= n_sections || section_unknown[k])
+          unknown.push_back(k);
         else
-          d_delta[s] = predictor ? delta_increment[s] : 0.;
+          dd[k] = predictor ? delta_increment[k] : 0.;
       const auto dot = [&](const VectorType &x, const VectorType &y) {
         double sum = 0.;
         for (unsigned int i = 0; i < n_owned; ++i)
@@ -819,34 +977,75 @@ namespace rubberdyn
       };
       if (!unknown.empty())
         {
-          const unsigned int m = unknown.size();
-          FullMatrix<double> schur(m, m);
-          Vector<double>     right(m), dd(m);
-          for (unsigned int i = 0; i < m; ++i)
+          const unsigned int n_unknown = unknown.size();
+          FullMatrix<double> schur(n_unknown, n_unknown);
+          Vector<double>     right(n_unknown), solved(n_unknown);
+          for (unsigned int i = 0; i < n_unknown; ++i)
             {
-              const unsigned int s = unknown[i];
-              right(i) = section_rhs[s] - dot(section_row[s], du);
-              for (unsigned int t = 0; t < n_sections; ++t)
+              const unsigned int k = unknown[i];
+              right(i) = (k < n_sections ? section_rhs[k] :
+                                           part_rhs[k - n_sections]) -
+                         dot(row_of(k), du);
+              for (unsigned int l = 0; l < m; ++l)
                 {
-                  const double entry =
-                    (s == t ? section_diagonal[s] : 0.) -
-                    dot(section_row[s], b[t]);
-                  if (section_unknown[t])
-                    schur(i,
-                          std::find(unknown.begin(), unknown.end(), t) -
-                            unknown.begin()) = entry;
+                  const double entry = border(k, l) - dot(row_of(k), b[l]);
+                  const auto   found =
+                    std::find(unknown.begin(), unknown.end(), l);
+                  if (found != unknown.end())
+                    schur(i, found - unknown.begin()) = entry;
                   else
-                    right(i) -= entry * d_delta[t];
+                    right(i) -= entry * dd[l];
                 }
             }
           schur.gauss_jordan();
-          schur.vmult(dd, right);
-          for (unsigned int i = 0; i < m; ++i)
-            d_delta[unknown[i]] = dd(i);
+          schur.vmult(solved, right);
+          for (unsigned int i = 0; i < n_unknown; ++i)
+            {
+              if (!std::isfinite(solved(i)))
+                throw QuasiStaticFailure(
+                  "the bordered equations of the pretension sections and "
+                  "rigid parts are singular");
+              dd[unknown[i]] = solved(i);
+            }
         }
+      for (unsigned int k = 0; k < m; ++k)
+        if (dd[k] != 0.)
+          du.add(-dd[k], b[k]);
       for (unsigned int s = 0; s < n_sections; ++s)
-        if (d_delta[s] != 0.)
-          du.add(-d_delta[s], b[s]);
+        d_delta[s] = dd[s];
+      for (unsigned int j = 0; j < n_parts; ++j)
+        d_part[j] = dd[n_sections + j];
+      // The parts' nodes go exactly where the turned parts have them, not
+      // to the linearised T dq: the free dofs follow that curvature too
+      // (a further solve with the same factorisation; a nearly
+      // incompressible layer bonded to a turning part would otherwise see
+      // it as a volumetric strain).
+      bool turns = false;
+      for (unsigned int j = 0; j < n_parts; ++j)
+        turns = turns || (parts->is_rotation(j) && d_part[j] != 0.);
+      if (turns)
+        {
+          VectorType force(partitioner);
+          parts->add_curvature_force(poses, d_part, force);
+          force.compress(VectorOperation::add);
+          std::vector<types::global_dof_index> indices;
+          std::vector<double>                  values;
+          column = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!constrained[i])
+              {
+                indices.push_back(partitioner->local_to_global(i));
+                values.push_back(-force.local_element(i));
+              }
+          column.set(indices, values);
+          column.compress(VectorOperation::insert);
+          n_iter += linear_solve(b_k, column);
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!constrained[i])
+              du.local_element(i) += b_k[partitioner->local_to_global(i)];
+        }
+      if (parts)
+        parts->add_linear_motion(d_part, du);
       return n_iter;
     }
 
@@ -855,7 +1054,8 @@ namespace rubberdyn
     double
     QuasiStaticSolver::Implementation::energy_increment(
       const VectorType          &du,
-      const std::vector<double> &d_delta) const
+      const std::vector<double> &d_delta,
+      const std::vector<double> &d_part) const
     {
       // The right-hand side the free dofs saw, with the prescribed
       // shortening increments' share -k_t dd_t (the load of a predictor
@@ -874,6 +1074,8 @@ namespace rubberdyn
       for (unsigned int s = 0; s < sections.size(); ++s)
         if (section_unknown[s])
           sum += d_delta[s] * section_rhs[s];
+      for (unsigned int j = 0; j < d_part.size(); ++j)
+        sum += d_part[j] * part_rhs[j];
       return std::abs(sum);
     }
 
@@ -889,7 +1091,8 @@ namespace rubberdyn
       const MPI_Comm                                            comm,
       const std::vector<PretensionLoad>                        &sections,
       const std::vector<model::RigidBody>                      &bodies,
-      const bool                                                bodies_move)
+      const bool                                                bodies_move,
+      const std::vector<RigidPartInEquilibrium>                &rigid_parts)
       : impl(std::make_unique<Implementation>(dof_handler,
                                               partitioner,
                                               elements,
@@ -899,11 +1102,14 @@ namespace rubberdyn
                                               comm,
                                               sections,
                                               bodies,
-                                              bodies_move))
+                                              bodies_move,
+                                              rigid_parts))
       , section_force(sections.size(), 0.)
       , shortening(sections.size(), 0.)
     {
       u.reinit(partitioner);
+      if (impl->parts)
+        part_poses = impl->parts->reference_poses();
     }
 
 
@@ -948,7 +1154,8 @@ namespace rubberdyn
       Implementation::Residual r;
       std::vector<double>      unused;
       impl->set_section_targets(current_time, shortening, unused);
-      impl->evaluate(u, shortening, current_time, current_time, r);
+      impl->evaluate(
+        u, shortening, part_poses, current_time, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +
@@ -1008,6 +1215,9 @@ namespace rubberdyn
       // The same for the sections' shortenings.
       std::vector<double> delta_start, delta_trial, d_delta, delta_increment,
         prescribed;
+      // And for the rigid parts in equilibrium: poses and increments.
+      std::vector<model::RigidBody> poses_start, poses_trial;
+      std::vector<double>           d_part;
       double                   step = std::min(s.initial_step, s.maximum_step);
       unsigned int             cutbacks = 0, cutback_iterations = 0;
       while (current_time < end_time * (1. - 1e-12))
@@ -1043,12 +1253,13 @@ namespace rubberdyn
           u.update_ghost_values();
           // The sections: targets at t_new, prescribed increments.
           delta_start = shortening;
+          poses_start = part_poses;
           I.set_section_targets(t_new, shortening, prescribed);
           delta_increment.assign(shortening.size(), 0.);
           for (unsigned int s = 0; s < shortening.size(); ++s)
             if (!I.section_unknown[s])
               delta_increment[s] = prescribed[s] - shortening[s];
-          I.evaluate(u, shortening, t_new, t_new, r);
+          I.evaluate(u, shortening, part_poses, t_new, t_new, r);
           const bool surfaces_move =
             I.bodies_move_between(current_time, t_new);
           std::string  reason;
@@ -1070,15 +1281,36 @@ namespace rubberdyn
                       // constraint does (the residual at the surfaces' new
                       // places would have it slip at once).
                       Implementation::Residual r_start;
-                      I.evaluate(u, shortening, t_new, current_time, r_start);
-                      I.assemble(
-                        u, t_new, current_time, r_start, increment, predictor);
+                      I.evaluate(u,
+                                 shortening,
+                                 part_poses,
+                                 t_new,
+                                 current_time,
+                                 r_start);
+                      I.assemble(u,
+                                 t_new,
+                                 current_time,
+                                 part_poses,
+                                 r_start,
+                                 increment,
+                                 predictor);
                       I.add_body_motion_load(u, current_time, t_new);
                     }
                   else
-                    I.assemble(u, t_new, t_new, r, increment, predictor);
-                  n_linear = I.solve(
-                    du, d_delta, increment, delta_increment, predictor);
+                    I.assemble(
+                      u, t_new, t_new, part_poses, r, increment, predictor);
+                  n_linear = I.solve(du,
+                                     d_delta,
+                                     d_part,
+                                     part_poses,
+                                     increment,
+                                     delta_increment,
+                                     predictor);
+                }
+              catch (const QuasiStaticFailure &)
+                {
+                  // (A singular rigid part: no cut-back can help.)
+                  throw;
                 }
               catch (const std::exception &e)
                 {
@@ -1090,7 +1322,8 @@ namespace rubberdyn
                   break;
                 }
               linear_total += n_linear;
-              const double energy_increment = I.energy_increment(du, d_delta);
+              const double energy_increment =
+                I.energy_increment(du, d_delta, d_part);
               if (predictor)
                 first_energy = energy_increment;
 
@@ -1110,12 +1343,25 @@ namespace rubberdyn
                     u_trial.local_element(i) =
                       u.local_element(i) +
                       (I.constrained[i] ? 1. : alpha) * du.local_element(i);
+                  // The rigid parts turn by the finite rotation, and their
+                  // nodes are placed on them exactly.
+                  poses_trial = part_poses;
+                  if (I.parts)
+                    {
+                      I.parts->advance(poses_trial, d_part, alpha);
+                      I.parts->place_nodes(poses_trial, u_trial);
+                    }
                   u_trial.update_ghost_values();
                   delta_trial = shortening;
                   for (unsigned int s = 0; s < shortening.size(); ++s)
                     delta_trial[s] +=
                       (I.section_unknown[s] ? alpha : 1.) * d_delta[s];
-                  I.evaluate(u_trial, delta_trial, t_new, t_new, r_trial);
+                  I.evaluate(u_trial,
+                             delta_trial,
+                             poses_trial,
+                             t_new,
+                             t_new,
+                             r_trial);
                   if (!r_trial.failed &&
                       (predictor || !s.line_search || trial == 6 ||
                        r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
@@ -1135,6 +1381,7 @@ namespace rubberdyn
               u.swap(u_trial);
               std::swap(r, r_trial);
               shortening.swap(delta_trial);
+              part_poses.swap(poses_trial);
 
               const double scale =
                 std::max({r.reaction_norm, r.load_norm, s.residual_floor});
@@ -1187,6 +1434,7 @@ namespace rubberdyn
               u = u_start;
               u.update_ghost_values();
               shortening = delta_start;
+              part_poses = poses_start;
               ++cutbacks;
               cutback_iterations += std::min(iteration + 1, s.max_iterations);
               if (root)

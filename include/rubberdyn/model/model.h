@@ -65,6 +65,12 @@ namespace rubberdyn
       bool rigid_free_translation[3] = {true, true, true};
       /** A rigid part's free rotations about x, y, z. */
       bool rigid_free_rotation[3] = {true, true, true};
+      /**
+       * Whether a rigid part's free directions are unknowns of the static
+       * equilibrium on a quasi-static load path (`Quasi-static motion =
+       * equilibrium`); else it stands still there (`held`).
+       */
+      bool quasi_static_equilibrium = false;
     };
 
     /** A boundary condition on some boundary ids. */

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <rubberdyn/base/vector.h>
 
@@ -23,6 +25,21 @@ namespace rubberdyn
      * equilibrium at t = 0 is exactly this: it is the quasi-static solver's
      * own residual function (doc/theory.md, section 10.1).
      */
+    /**
+     * Where the load path left a rigid part in equilibrium: x = c + d +
+     * R (X - c) about its centre c.
+     */
+    struct RigidPartPose
+    {
+      /** Index of the part in the model. */
+      unsigned int part = 0;
+      /** Its centre at t = 0 (mm). */
+      dealii::Point<3> centre;
+      /** Displacement of the centre (mm) and rotation. */
+      dealii::Tensor<1, 3> displacement;
+      dealii::Tensor<2, 3> rotation;
+    };
+
     struct PreloadState
     {
       /** Displacement (mm; ghosted). */
@@ -42,6 +59,8 @@ namespace rubberdyn
        * reference points of this rank's nodes).
        */
       std::vector<std::vector<double>> contact_states;
+      /** The rigid parts in equilibrium (Quasi-static motion). */
+      std::vector<RigidPartPose> rigid_part_poses;
       /** Pseudo-time of the converged state. */
       double time = 0.;
     };

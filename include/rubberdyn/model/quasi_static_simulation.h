@@ -128,6 +128,14 @@ namespace rubberdyn
       bodies_follow_load_path() const;
 
       /**
+       * Refuse a rigid part @p p in equilibrium that shares no node with a
+       * deformable part (nothing would hold it), naming its `Quasi-static
+       * motion`. Collective.
+       */
+      void
+      require_held_by_solid(const unsigned int p) const;
+
+      /**
        * Let the model's pretension sections cut @p hexes and set
        * pretension_loads and cut_elements.
        *
@@ -159,6 +167,12 @@ namespace rubberdyn
         unsigned int part, direction, group;
       };
       std::vector<HeldPartGroup> held_part_groups;
+      /**
+       * The rigid parts in equilibrium (Quasi-static motion =
+       * equilibrium, with a free direction), in the solver's order, and
+       * the part of each.
+       */
+      std::vector<unsigned int> equilibrium_parts;
       /** The body (in `bodies`) of each rigid surface. */
       std::vector<unsigned int> surface_body;
       /** Boundary condition of each of the surface loads. */

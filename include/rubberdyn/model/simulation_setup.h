@@ -1,6 +1,9 @@
 #ifndef rubberdyn_model_simulation_setup_h
 #define rubberdyn_model_simulation_setup_h
 
+#include <deal.II/base/point.h>
+
+#include <rubberdyn/base/vector.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 
@@ -96,6 +99,27 @@ namespace rubberdyn
         const std::vector<unsigned int>                         &body_of_surface,
         std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
         std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces);
+
+      /**
+       * The row-summed (lumped) mass rho N_a of each part's cells, one
+       * vector per part (kg, compressed: owned entries valid). Their sum is
+       * the explicit engine's nodal mass without mass scaling.
+       */
+      std::vector<VectorType>
+      part_masses(const Model &model);
+
+      /**
+       * The centre of mass of the rigid part @p p as the explicit engine
+       * moves it: the centre of the nodal mass its nodes carry (the sum of
+       * @p masses, part_masses(): its cells' own and what deformable
+       * neighbours add to shared nodes), so that gravity has no moment
+       * about it and its rotations are about it in both schemes (mm).
+       * Collective.
+       */
+      Point<3>
+      rigid_part_centre_of_mass(const Model                   &model,
+                                const unsigned int             p,
+                                const std::vector<VectorType> &masses);
     } // namespace setup
   }   // namespace model
 } // namespace rubberdyn

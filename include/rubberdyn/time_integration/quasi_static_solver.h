@@ -12,6 +12,7 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -98,6 +99,32 @@ namespace rubberdyn
     };
 
     /**
+     * A rigid part whose free directions are unknowns of the static
+     * equilibrium (`Parts/<name>/Quasi-static motion = equilibrium`): its
+     * nodes move with it, x = C + d + R (X - C) about its centre C, and d
+     * and R (in its free directions; the others held) are
+     * found with the displacement so that the forces on it (of the solid
+     * through its nodes, and of the loads on its faces) have no resultant
+     * and no moment there. Its nodes must be constrained dofs of the
+     * KinematicConstraints (held: their motion comes from the part).
+     */
+    struct RigidPartInEquilibrium
+    {
+      /** Name, for messages and the columns. */
+      std::string name;
+      /** The material ids of its cells. */
+      std::set<types::material_id> material_ids;
+      /**
+       * The point it turns about, at t = 0 (mm): its centre of mass as
+       * the explicit engine has it (setup::rigid_part_centre_of_mass()),
+       * so that a held translation holds the same point in both schemes.
+       */
+      Point<3> centre;
+      /** Free translations x, y, z, then rotations about x, y, z. */
+      bool free[6] = {false, false, false, false, false, false};
+    };
+
+    /**
      * Static equilibrium $f_{int}(u) = f_{ext}$ by Newton-Raphson with load
      * stepping in the pseudo-time t of the boundary-condition functions
      * (Wriggers, Nonlinear Finite Element Methods (2008), sections 5.1 and
@@ -148,6 +175,13 @@ namespace rubberdyn
      * methods; Wriggers 2008, section 7.2). A load step never steps over
      * a lock time.
      *
+     * Rigid parts in equilibrium (RigidPartInEquilibrium) border the
+     * system the same way, with one unknown per free direction whose mode
+     * is the part's rigid motion (a translation, or a rotation about its
+     * current centre), and their equations are the part's resultant and
+     * moment (doc/theory.md, section 14). Their poses advance with the
+     * finite rotation, and the nodes are placed exactly on them.
+     *
      * Rigid surfaces (contact::RigidSurfaceForces among the contributions)
      * are carried by rigid bodies that the load path places: at
      * pseudo-time t each body is at
@@ -184,6 +218,7 @@ namespace rubberdyn
        *   rigid surfaces), at their reference place.
        * @param bodies_move Whether the bodies follow their load path
        *   (else they stand still).
+       * @param rigid_parts The rigid parts in equilibrium.
        */
       QuasiStaticSolver(
         const DoFHandler<3, 3>                                   &dof_handler,
@@ -195,7 +230,8 @@ namespace rubberdyn
         const MPI_Comm                                            comm,
         const std::vector<PretensionLoad>                        &sections = {},
         const std::vector<model::RigidBody>                      &bodies   = {},
-        const bool bodies_move = true);
+        const bool bodies_move = true,
+        const std::vector<RigidPartInEquilibrium> &rigid_parts = {});
 
       ~QuasiStaticSolver();
 
@@ -296,6 +332,16 @@ namespace rubberdyn
       const std::vector<model::RigidBody> &
       bodies() const;
 
+      /**
+       * The rigid parts in equilibrium at the last converged state: name,
+       * centre (reference_position, mm), displacement (mm) and rotation.
+       */
+      const std::vector<model::RigidBody> &
+      rigid_part_poses() const
+      {
+        return part_poses;
+      }
+
       /** The converged load steps so far. */
       const std::vector<LoadStepRecord> &
       steps() const
@@ -322,6 +368,7 @@ namespace rubberdyn
       std::vector<double>         energy_by_group;
       std::vector<LoadStepRecord> records;
       std::vector<double>         section_force, shortening;
+      std::vector<model::RigidBody> part_poses;
     };
   } // namespace time_integration
 } // namespace rubberdyn
