@@ -861,6 +861,13 @@ namespace rubberdyn
           list.set("null space: type", "pre-computed");
           list.set("null space: dimension", 6);
           list.set("null space: vectors", rigid_body_modes.data());
+          // Aggregate nodes, not single dofs: the three displacement dofs of
+          // a node are consecutive (deal.II's numbering of FESystem, never
+          // renumbered here), and the six modes couple them. deal.II's list
+          // leaves ML's default of one equation per node; with three, the
+          // bonded tube (tube_16, K/G = 1250) takes 19 316 CG iterations
+          // instead of 34 492, and half the time.
+          list.set("PDE equations", 3);
           amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
           amg->initialize(matrix.trilinos_matrix(), list);
         }
@@ -937,23 +944,27 @@ namespace rubberdyn
             "); hold that direction (Rigid motion) or let the part stand "
             "still (Quasi-static motion = held)");
 
-      // b_k = K^{-1} k_k on the free dofs (zero on the constrained ones).
-      std::vector<VectorType>       b(m);
+      // x = K^{-1} (factor v) on the free dofs, for a v on all local dofs.
       TrilinosWrappers::MPI::Vector column(rhs), b_k(rhs);
+      const auto solve_free = [&](const VectorType &v, const double factor) {
+        std::vector<types::global_dof_index> indices;
+        std::vector<double>                  values;
+        column = 0.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (!constrained[i])
+            {
+              indices.push_back(partitioner->local_to_global(i));
+              values.push_back(factor * v.local_element(i));
+            }
+        column.set(indices, values);
+        column.compress(VectorOperation::insert);
+        return linear_solve(b_k, column);
+      };
+      // b_k = K^{-1} k_k on the free dofs (zero on the constrained ones).
+      std::vector<VectorType> b(m);
       for (unsigned int k = 0; k < m; ++k)
         {
-          std::vector<types::global_dof_index> indices;
-          std::vector<double>                  values;
-          column = 0.;
-          for (unsigned int i = 0; i < n_owned; ++i)
-            if (!constrained[i])
-              {
-                indices.push_back(partitioner->local_to_global(i));
-                values.push_back(column_of(k).local_element(i));
-              }
-          column.set(indices, values);
-          column.compress(VectorOperation::insert);
-          n_iter += linear_solve(b_k, column);
+          n_iter += solve_free(column_of(k), 1.);
           b[k].reinit(partitioner);
           for (unsigned int i = 0; i < n_owned; ++i)
             b[k].local_element(i) =
@@ -1028,18 +1039,7 @@ namespace rubberdyn
           VectorType force(partitioner);
           parts->add_curvature_force(poses, d_part, force);
           force.compress(VectorOperation::add);
-          std::vector<types::global_dof_index> indices;
-          std::vector<double>                  values;
-          column = 0.;
-          for (unsigned int i = 0; i < n_owned; ++i)
-            if (!constrained[i])
-              {
-                indices.push_back(partitioner->local_to_global(i));
-                values.push_back(-force.local_element(i));
-              }
-          column.set(indices, values);
-          column.compress(VectorOperation::insert);
-          n_iter += linear_solve(b_k, column);
+          n_iter += solve_free(force, -1.);
           for (unsigned int i = 0; i < n_owned; ++i)
             if (!constrained[i])
               du.local_element(i) += b_k[partitioner->local_to_global(i)];

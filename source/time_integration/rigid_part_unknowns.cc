@@ -247,21 +247,31 @@ namespace rubberdyn
 
 
 
+    template <typename Action>
+    void
+    RigidPartUnknowns::for_each_owned_entry(const unsigned int j,
+                                            const Action      &action) const
+    {
+      const PartNodes &nodes = parts[unknowns[j].part];
+      for (unsigned int n = 0; n < nodes.dofs.size(); ++n)
+        if (nodes.owned[n])
+          {
+            const Tensor<1, 3> g = mode(j, n);
+            for (unsigned int d = 0; d < 3; ++d)
+              action(nodes.dofs[n][d], g[d]);
+          }
+    }
+
+
+
     std::vector<double>
     RigidPartUnknowns::project(const VectorType &v) const
     {
       std::vector<double> result(unknowns.size(), 0.);
       for (unsigned int j = 0; j < unknowns.size(); ++j)
-        {
-          const PartNodes &nodes = parts[unknowns[j].part];
-          for (unsigned int n = 0; n < nodes.dofs.size(); ++n)
-            if (nodes.owned[n])
-              {
-                const Tensor<1, 3> g = mode(j, n);
-                for (unsigned int d = 0; d < 3; ++d)
-                  result[j] += g[d] * v.local_element(nodes.dofs[n][d]);
-              }
-        }
+        for_each_owned_entry(j, [&](const unsigned int i, const double g) {
+          result[j] += g * v.local_element(i);
+        });
       Utilities::MPI::sum(ArrayView<const double>(result),
                           comm,
                           ArrayView<double>(result));
@@ -359,16 +369,9 @@ namespace rubberdyn
                                          VectorType                &du) const
     {
       for (unsigned int j = 0; j < unknowns.size(); ++j)
-        {
-          const PartNodes &nodes = parts[unknowns[j].part];
-          for (unsigned int n = 0; n < nodes.dofs.size(); ++n)
-            if (nodes.owned[n])
-              {
-                const Tensor<1, 3> g = mode(j, n);
-                for (unsigned int d = 0; d < 3; ++d)
-                  du.local_element(nodes.dofs[n][d]) += g[d] * dq[j];
-              }
-        }
+        for_each_owned_entry(j, [&](const unsigned int i, const double g) {
+          du.local_element(i) += g * dq[j];
+        });
     }
   } // namespace time_integration
 } // namespace rubberdyn

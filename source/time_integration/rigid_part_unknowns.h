@@ -210,6 +210,14 @@ namespace rubberdyn
         unsigned int part, direction;
       };
 
+      /**
+       * Call @p action(local dof, g_j there) for every owned dof of the
+       * part of unknown @p j.
+       */
+      template <typename Action>
+      void
+      for_each_owned_entry(const unsigned int j, const Action &action) const;
+
       /** Column j of T at node @p n of its part (current positions). */
       Tensor<1, 3>
       mode(const unsigned int j, const unsigned int n) const;

@@ -198,7 +198,8 @@ namespace rubberdyn
      * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic laws:
      * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
      * near-null space holds the six rigid-body modes of the nodal
-     * coordinates (three translations, three rotations).
+     * coordinates (three translations, three rotations), aggregating
+     * nodes (three equations per node).
      */
     class QuasiStaticSolver
     {
