@@ -662,6 +662,22 @@ namespace rubberdyn
                       ExcMessage("The preload's rigid parts do not fit"));
           RigidBody         &body   = bodies[body_of_part[pose.part]];
           const Tensor<1, 3> offset = pose.centre - body.reference_position;
+          // The load path balanced the part about its centre of mass, and
+          // its held translations hold that point: a restart whose
+          // densities move the centre would start it out of equilibrium.
+          if (offset.norm() > 1e-9 * (1. + pose.centre.norm()))
+            {
+              std::ostringstream where;
+              where << pose.centre << " mm in the preload, " << body.reference_position
+                    << " mm now";
+              throw InputError(
+                "Output/Restart from checkpoint",
+                "the centre of mass of the rigid part '" +
+                  model.parts[pose.part].name +
+                  "', about which the preload found its equilibrium, has "
+                  "moved (" + where.str() +
+                  "): a density changed; run the preload again");
+            }
           body.displacement =
             pose.displacement + offset - pose.rotation * offset;
           body.rotation = pose.rotation;

@@ -30,7 +30,8 @@
 #    than 1e-6 mm and the kinetic energy stays below 1e-10 of the strain
 #    energy.
 # 3. A restart from that run's preload checkpoint (Output/Restart from
-#    checkpoint, a shorter explicit run) starts the plate at the same pose.
+#    checkpoint, a shorter explicit run) starts the plate at the same pose;
+#    with another plate density (its centre of mass moves) it is refused.
 # Usage: rigid_part_equilibrium.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
@@ -232,3 +233,12 @@ awk -F, -v phi="$preload_phi" '
     printf "restart from the preload: %d rows, plate rotation %.9g (load path %.9g), kinetic / strain energy %.1e\n", rows, first_phi, phi, worst_k
     exit (rows < 4 || abs(first_phi - phi) > 1e-8 * abs(phi) || worst_k > 1e-10)
   }' handoff/time_history.csv
+# Another density moves the plate's centre of mass, about which the load
+#    path balanced it: that restart is refused, naming the entry.
+sed -e 's|    set Density             = 7.85e-6|    set Density             = 2e-6|' restart.prm > restart_density.prm
+if run restart_density.prm restart_density.log 2> restart_density.err; then
+  echo "restart with another density: not refused"; exit 1
+fi
+grep -q "entry 'Output/Restart from checkpoint': the centre of mass of the rigid part 'steel'" restart_density.err ||
+  { echo "restart with another density: wrong message"; cat restart_density.err; exit 1; }
+echo "restart with another plate density: refused ($(grep -o "has moved ([^)]*)" restart_density.err | head -1))"
