@@ -64,18 +64,12 @@ subsection Output
 end
 PRM
 }
-run() { # PRM LOG
-  if [ "$nproc" -gt 1 ]; then
-    mpirun --oversubscribe -np "$nproc" "$exe" "$1" > "$2"
-  else
-    "$exe" "$1" > "$2"
-  fi
-}
+source "$(dirname "$0")/script_helpers.sh"
 write_prm 0.25 coarse > coarse.prm
 write_prm 0.0625 fine > fine.prm
 rm -rf coarse fine
-run coarse.prm coarse.log
-run fine.prm fine.log
+run_prm coarse.prm coarse.log
+run_prm fine.prm fine.log
 cutbacks=$(grep -c "Cut back: no convergence in 15 iterations" coarse.log || true)
 echo "cut-backs with steps of 0.25: $cutbacks"
 grep -q "Finished: .* load steps to t = 1," coarse.log

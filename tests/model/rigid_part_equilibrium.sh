@@ -36,28 +36,7 @@
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
 here=$(cd "$(dirname "$0")" && pwd)
-run() { # PRM LOG
-  if [ "$nproc" -gt 1 ]; then
-    mpirun --oversubscribe -np "$nproc" "$exe" "$1" > "$2"
-  else
-    "$exe" "$1" > "$2"
-  fi
-}
-rubber_part() {
-  cat <<PRM
-  subsection rubber
-    set Material ids        = 1
-    set Element formulation = F-bar
-    set Model               = Yeoh
-    set Constants from      = coefficients
-    set C10                 = 0.00055
-    set C20                 = -0.00005
-    set C30                 = 0.000015
-    set Poisson's ratio     = 0.499
-    set Density             = 1.1e-6
-  end
-PRM
-}
+source "$(dirname "$0")/script_helpers.sh"
 write_plate() { # NAME SCHEME TRACTION_Z
   cat > "$1.prm" <<PRM
 set Study = Model
@@ -66,7 +45,7 @@ subsection Mesh
 end
 subsection Parts
   set Names = rubber, steel
-$(rubber_part)
+$(study_rubber_part)
   subsection steel
     set Material ids        = 2
     set Model               = Rigid
@@ -110,7 +89,7 @@ PRM
 # 1. Equilibrium and kinematics.
 write_plate plate quasi-static "-0.001 * t * (1 + (x - 10) / 10)"
 echo "end" >> plate.prm
-run plate.prm plate.log
+run_prm plate.prm plate.log
 grep "Rigid part steel\|^Finished" plate.log
 grep -q "^Finished: 10 load steps .* 0 cut-backs" plate.log || { echo "plate: not 10 steps without cut-back"; exit 1; }
 bash "$here/check_newton_log.sh" plate.log 1e-1 100 4
@@ -128,7 +107,7 @@ subsection Mesh
 end
 subsection Parts
   set Names = rubber
-$(rubber_part)
+$(study_rubber_part)
 end
 subsection Boundary conditions
   set Names = base, top
@@ -160,7 +139,7 @@ subsection Output
   set Field output interval   = 0
 end
 PRM
-run rubber.prm rubber.log
+run_prm rubber.prm rubber.log
 grep "^Finished" rubber.log
 paste -d, <(tail -n 1 plate/time_history.csv) <(tail -n 1 rubber/time_history.csv) > last.csv
 paste -d, <(head -n 1 plate/time_history.csv | sed 's/\([^,]*\)/p:\1/g') \
@@ -199,7 +178,7 @@ cat names.csv last.csv | awk -F, '
 write_plate handoff "quasi-static then explicit" "-0.0002 * (1 + (x - 10) / 10)"
 echo "  set History output interval = 0.05" >> handoff.prm
 echo "end" >> handoff.prm
-run handoff.prm handoff.log
+run_prm handoff.prm handoff.log
 grep "Rigid part steel\|^Finished" handoff.log
 preload_phi=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
   { p = $c["steel_rotation_y"] } END { printf "%.9g", p }' handoff/preload/time_history.csv)
@@ -222,7 +201,7 @@ awk -F, -v phi="$preload_phi" '
 #    the load path left it.
 sed -e 's|  set End time = 1|  set End time = 0.2|' \
     -e 's|^subsection Output$|subsection Output\n  set Restart from checkpoint = true|' handoff.prm > restart.prm
-run restart.prm restart.log
+run_prm restart.prm restart.log
 grep -q "Newton" restart.log && { echo "restart: the load path ran again"; exit 1; }
 awk -F, -v phi="$preload_phi" '
   function abs(x) { return x < 0 ? -x : x }
@@ -236,7 +215,7 @@ awk -F, -v phi="$preload_phi" '
 # Another density moves the plate's centre of mass, about which the load
 #    path balanced it: that restart is refused, naming the entry.
 sed -e 's|    set Density             = 7.85e-6|    set Density             = 2e-6|' restart.prm > restart_density.prm
-if run restart_density.prm restart_density.log 2> restart_density.err; then
+if run_prm restart_density.prm restart_density.log 2> restart_density.err; then
   echo "restart with another density: not refused"; exit 1
 fi
 grep -q "entry 'Output/Restart from checkpoint': the centre of mass of the rigid part 'steel'" restart_density.err ||

@@ -25,13 +25,7 @@
 # Usage: rigid_part_quasi_static.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
-run() { # PRM LOG
-  if [ "$nproc" -gt 1 ]; then
-    mpirun --oversubscribe -np "$nproc" "$exe" "$1" > "$2"
-  else
-    "$exe" "$1" > "$2"
-  fi
-}
+source "$(dirname "$0")/script_helpers.sh"
 write_bonded() { # NAME STEEL_MODEL EXTRA_NAME EXTRA_SUBSECTION
   cat > "$1.prm" <<PRM
 set Study = Model
@@ -40,17 +34,7 @@ subsection Mesh
 end
 subsection Parts
   set Names = rubber, steel
-  subsection rubber
-    set Material ids        = 1
-    set Element formulation = F-bar
-    set Model               = Yeoh
-    set Constants from      = coefficients
-    set C10                 = 0.00055
-    set C20                 = -0.00005
-    set C30                 = 0.000015
-    set Poisson's ratio     = 0.499
-    set Density             = 1.1e-6
-  end
+$(study_rubber_part)
   subsection steel
     set Material ids        = 2
     set Model               = $2
@@ -88,8 +72,8 @@ write_bonded elastic Elastic ", top" "  subsection top
     set Boundary ids = 2
     set Type         = fixed
   end"
-run rigid.prm rigid.log
-run elastic.prm elastic.log
+run_prm rigid.prm rigid.log
+run_prm elastic.prm elastic.log
 grep "Rigid part steel" rigid.log
 grep -q "^Finished: 4 load steps .* 0 cut-backs" rigid.log || { echo "rigid: not 4 steps without cut-back"; exit 1; }
 paste -d, rigid/time_history.csv elastic/time_history.csv | awk -F, '
@@ -132,7 +116,7 @@ subsection Boundary conditions
   end
 end
 PRM
-run drop.prm drop.log
+run_prm drop.prm drop.log
 grep "Rigid part block\|^Finished" drop.log
 awk -F, '
   function abs(x) { return x < 0 ? -x : x }

@@ -1,0 +1,31 @@
+# Sourced by the script tests of this directory (they set exe, nproc).
+
+# run_prm PRM LOG: the executable $exe on the parameter file PRM on $nproc
+# ranks (mpirun for more than one), its standard output to LOG; its status
+# is the run's.
+run_prm() {
+  if [ "$nproc" -gt 1 ]; then
+    mpirun --oversubscribe -np "$nproc" "$exe" "$1" > "$2"
+  else
+    "$exe" "$1" > "$2"
+  fi
+}
+
+# study_rubber_part: the reference study's Yeoh rubber (C10, C20, C30 of
+# seed-notes.md, nu = 0.499, F-bar) as the subsection of the part "rubber"
+# on material id 1, for a Parts subsection.
+study_rubber_part() {
+  cat <<PRM
+  subsection rubber
+    set Material ids        = 1
+    set Element formulation = F-bar
+    set Model               = Yeoh
+    set Constants from      = coefficients
+    set C10                 = 0.00055
+    set C20                 = -0.00005
+    set C30                 = 0.000015
+    set Poisson's ratio     = 0.499
+    set Density             = 1.1e-6
+  end
+PRM
+}
