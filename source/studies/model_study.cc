@@ -484,7 +484,7 @@ namespace rubberdyn
             "run's), or 'equilibrium' (its free directions of Rigid motion "
             "are unknowns, found so that the forces on it, of the solid "
             "through its nodes and of the loads on its faces, have no "
-            "resultant (kN) and no moment (kN mm) about its centroid in "
+            "resultant (kN) and no moment (kN mm) about its centre of mass in "
             "those directions; something must hold it in each of them). "
             "The explicit run takes its place from there.");
           prm.leave_subsection();
