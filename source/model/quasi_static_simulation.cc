@@ -255,7 +255,10 @@ namespace rubberdyn
               touched.local_element(model.partitioner->global_to_local(dof)) =
                 1.;
           }
+      // (Summed at the owners, then seen at every rank's ghosts: a node of
+      // an owned cell of the part may be owned by another rank.)
       touched.compress(VectorOperation::add);
+      touched.update_ghost_values();
       bool held = false;
       for (const auto &cell : model.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() &&
@@ -263,10 +266,8 @@ namespace rubberdyn
           {
             cell->get_dof_indices(dofs);
             for (const types::global_dof_index dof : dofs)
-              held = held ||
-                     (model.partitioner->in_local_range(dof) &&
-                      touched.local_element(
-                        model.partitioner->global_to_local(dof)) > 0.);
+              held = held || touched.local_element(
+                               model.partitioner->global_to_local(dof)) > 0.;
           }
       if (!Utilities::MPI::logical_or(held, model.comm))
         throw InputError(
