@@ -25,7 +25,7 @@ namespace rubberdyn
 
       /** The entries only the explicit run reads. */
       bool
-      explicit_only(const std::string &line)
+      explicit_only(const std::string &line, const bool with_gravity)
       {
         static const char *const names[] = {"Initial velocity",
                                             "Initial angular velocity",
@@ -46,7 +46,7 @@ namespace rubberdyn
           dealii::Utilities::trim(line.substr(4, equals - 4));
         for (const char *name : names)
           if (entry == name)
-            return true;
+            return !(with_gravity && entry == "Density");
         return false;
       }
     } // namespace
@@ -54,12 +54,13 @@ namespace rubberdyn
 
 
     std::string
-    preload_parameters_text(const std::string &model_parameters)
+    preload_parameters_text(const std::string &model_parameters,
+                            const bool         with_gravity)
     {
       std::istringstream lines(model_parameters);
       std::string        line, text;
       while (std::getline(lines, line))
-        if (!explicit_only(line))
+        if (!explicit_only(line, with_gravity))
           text += line + '\n';
       return text;
     }
@@ -187,9 +188,9 @@ namespace rubberdyn
                                  directory + " ('" + here + "' here, '" +
                                  there +
                                  "' there); only the explicit run's entries "
-                                 "(End time, initial velocities, densities, "
-                                 "explicit step settings) and the Output "
-                                 "settings may change");
+                                 "(End time, initial velocities, densities "
+                                 "without gravity, explicit step settings) "
+                                 "and the Output settings may change");
             }
           if (ranks != dealii::Utilities::MPI::n_mpi_processes(comm))
             throw InputError(entry,

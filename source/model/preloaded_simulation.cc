@@ -68,7 +68,8 @@ namespace rubberdyn
       const std::string                 &model_parameters)
       : model(model)
       , output(output)
-      , preload_parameters(preload_parameters_text(model_parameters))
+      , preload_parameters(
+          preload_parameters_text(model_parameters, model.gravity.norm() != 0.))
       , checkpoint_directory(output.directory + "/preload/checkpoint")
     {
       if (output.checkpoint_interval > 0.)

@@ -6,6 +6,7 @@
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/mixed_up_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
+#include <rubberdyn/model/gravity_load.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/simulation_setup.h>
@@ -90,8 +91,6 @@ namespace rubberdyn
                   "/Rigid part), whose contact does not take the part's "
                   "motion into its tangent yet; use 'held'");
           }
-      if (model.gravity.norm() != 0.)
-        refuse("gravity", "Model/Gravity");
       if (time_integration.mass_scaling_time_step > 0.)
         refuse("mass scaling", "Time integration/Mass scaling time step");
       if (output.checkpoint_interval > 0.)
@@ -146,6 +145,14 @@ namespace rubberdyn
       std::vector<ForceContribution *> contributions;
       if (surface_loads)
         contributions.push_back(surface_loads.get());
+      // Gravity grows over the load path to its full weight at the end,
+      // which the explicit run of a hand-off applies from its start.
+      if (model.gravity.norm() != 0.)
+        {
+          gravity_load = std::make_unique<GravityLoad>(
+            model, time_integration.quasi_static_end_time);
+          contributions.push_back(gravity_load.get());
+        }
       // Rigid parts: their nodes are constrained (one group per
       // direction, after the conditions' groups). They stand still, or
       // move with the part's pose, whose free directions are then
@@ -414,6 +421,11 @@ namespace rubberdyn
                       free + ": no inertia)")
               << std::endl;
         }
+      if (gravity_load)
+        log << "  Gravity " << model.gravity
+            << " mm/ms^2: the weight (" << gravity_load->total_weight()
+            << " kN in all) grows with t to its full value at t = "
+            << time_integration.quasi_static_end_time << std::endl;
       for (unsigned int s = 0; s < model.pretension_sections.size(); ++s)
         {
           const PretensionSection &section = model.pretension_sections[s];

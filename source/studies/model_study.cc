@@ -407,7 +407,10 @@ namespace rubberdyn
       prm.declare_entry("Gravity", "0, 0, 0", Patterns::Anything(),
                         "Gravitational acceleration (mm/ms^2), three "
                         "components x, y, z; acts on the parts and on the "
-                        "rigid bodies with mass. Earth: 0, 0, -9.81e-3.");
+                        "rigid bodies with mass. Earth: 0, 0, -9.81e-3. On a "
+                        "quasi-static load path the weight grows with the "
+                        "pseudo-time to its full value at the Quasi-static "
+                        "end time.");
       prm.leave_subsection();
 
       prm.enter_subsection("Mesh");

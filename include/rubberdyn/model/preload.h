@@ -73,9 +73,13 @@ namespace rubberdyn
      * bulk-viscosity settings). A preload checkpoint serves every explicit
      * run whose preload text is the same: another end time, impact
      * velocity or mass.
+     *
+     * @param with_gravity Whether the model has gravity: then the
+     *   densities weigh on the preload and are part of its text.
      */
     std::string
-    preload_parameters_text(const std::string &model_parameters);
+    preload_parameters_text(const std::string &model_parameters,
+                            const bool         with_gravity);
 
     /**
      * Write @p state as the preload checkpoint @p directory (replaced as a

@@ -37,6 +37,7 @@ namespace rubberdyn
   {
     class Model;
     class SurfaceLoads;
+    class GravityLoad;
 
     /**
      * The quasi-static engine path (`Time integration/Scheme =
@@ -153,6 +154,8 @@ namespace rubberdyn
       std::unique_ptr<elements::ImplicitElements>             elements;
       std::unique_ptr<time_integration::KinematicConstraints> constraints;
       std::unique_ptr<SurfaceLoads>                           surface_loads;
+      /** Gravity, ramped over the load path (null without gravity). */
+      std::unique_ptr<GravityLoad> gravity_load;
       /** The rigid surfaces' bodies, contacts and their contributions. */
       std::vector<RigidBody>                                      bodies;
       std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
