@@ -28,19 +28,7 @@ end
 subsection Mesh
   set Mesh file = $source_dir/parameter_files/meshes/bonded_block.msh
 end
-subsection Parts
-  set Names = rubber, steel
-$(study_rubber_part)
-  subsection steel
-    set Material ids        = 2
-    set Model               = Rigid
-    set Rigid motion        = z
-    set Quasi-static motion = equilibrium
-    set Young's modulus     = 210
-    set Poisson's ratio     = 0.3
-    set Density             = 7.85e-6
-  end
-end
+$(bonded_block_parts "z")
 subsection Boundary conditions
   set Names = base
   subsection base

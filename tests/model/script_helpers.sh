@@ -29,3 +29,24 @@ study_rubber_part() {
   end
 PRM
 }
+
+# bonded_block_parts MOTION: the Parts subsection of meshes/bonded_block.msh
+# with the study's rubber (material id 1) and the steel plate (id 2) as a
+# rigid part in equilibrium on the load path, free in MOTION (Rigid motion).
+bonded_block_parts() {
+  cat <<PRM
+subsection Parts
+  set Names = rubber, steel
+$(study_rubber_part)
+  subsection steel
+    set Material ids        = 2
+    set Model               = Rigid
+    set Rigid motion        = $1
+    set Quasi-static motion = equilibrium
+    set Young's modulus     = 210
+    set Poisson's ratio     = 0.3
+    set Density             = 7.85e-6
+  end
+end
+PRM
+}
