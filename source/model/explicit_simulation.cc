@@ -68,7 +68,7 @@ namespace rubberdyn
 
     namespace
     {
-            constexpr const char *component_names[3] = {"x", "y", "z"};
+      constexpr const char *component_names[3] = {"x", "y", "z"};
 
       /**
        * The lumped mass of the rigid parts' cells (their elements compute

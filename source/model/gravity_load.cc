@@ -2,7 +2,6 @@
 
 #include <rubberdyn/model/gravity_load.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/simulation_setup.h>
 
 #include <algorithm>
 
@@ -10,12 +9,13 @@ namespace rubberdyn
 {
   namespace model
   {
-    GravityLoad::GravityLoad(const Model &model, const double full_at)
+    GravityLoad::GravityLoad(const Model                   &model,
+                             const std::vector<VectorType> &masses,
+                             const double                   full_at)
       : weight(model.partitioner)
       , full_at(full_at)
     {
       AssertThrow(full_at > 0., ExcMessage("gravity's ramp needs a time"));
-      const std::vector<VectorType> masses = setup::part_masses(model);
       // The component of each owned dof, from the cells that have it.
       std::vector<types::global_dof_index> dofs(model.fe.n_dofs_per_cell());
       for (const auto &cell : model.dof_handler.active_cell_iterators())

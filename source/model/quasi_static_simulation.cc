@@ -145,12 +145,20 @@ namespace rubberdyn
       std::vector<ForceContribution *> contributions;
       if (surface_loads)
         contributions.push_back(surface_loads.get());
+      // The nodal masses, for gravity and the centres of the rigid parts in
+      // equilibrium (once, if either needs them).
+      std::vector<VectorType> masses;
+      const auto              nodal_masses = [&]() -> const auto & {
+        if (masses.empty())
+          masses = setup::part_masses(model);
+        return masses;
+      };
       // Gravity grows over the load path to its full weight at the end,
       // which the explicit run of a hand-off applies from its start.
       if (model.gravity.norm() != 0.)
         {
           gravity_load = std::make_unique<GravityLoad>(
-            model, time_integration.quasi_static_end_time);
+            model, nodal_masses(), time_integration.quasi_static_end_time);
           contributions.push_back(gravity_load.get());
         }
       // Rigid parts: their nodes are constrained (one group per
@@ -158,7 +166,6 @@ namespace rubberdyn
       // move with the part's pose, whose free directions are then
       // unknowns of the solver.
       std::vector<time_integration::RigidPartInEquilibrium> rigid_parts;
-      std::vector<VectorType>                               masses;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].rigid)
           {
@@ -172,29 +179,26 @@ namespace rubberdyn
                                         part.material_ids,
                                         d);
               }
+            if (!part.quasi_static_equilibrium)
+              continue;
             time_integration::RigidPartInEquilibrium unknowns;
-            unknowns.name         = part.name;
-            unknowns.material_ids = part.material_ids;
-            if (part.quasi_static_equilibrium)
-              {
-                if (masses.empty())
-                  masses = setup::part_masses(model);
-                unknowns.centre =
-                  setup::rigid_part_centre_of_mass(model, p, masses);
-              }
-            bool any              = false;
+            bool                                     any = false;
             for (unsigned int d = 0; d < 3; ++d)
               {
                 unknowns.free[d]     = part.rigid_free_translation[d];
                 unknowns.free[3 + d] = part.rigid_free_rotation[d];
                 any = any || unknowns.free[d] || unknowns.free[3 + d];
               }
-            if (part.quasi_static_equilibrium && any)
-              {
-                require_held_by_solid(p);
-                equilibrium_parts.push_back(p);
-                rigid_parts.push_back(unknowns);
-              }
+            // (A part in equilibrium with no free direction is held.)
+            if (!any)
+              continue;
+            require_held_by_solid(p);
+            unknowns.name         = part.name;
+            unknowns.material_ids = part.material_ids;
+            unknowns.centre =
+              setup::rigid_part_centre_of_mass(model, p, nodal_masses());
+            equilibrium_parts.push_back(p);
+            rigid_parts.push_back(unknowns);
           }
       // Rigid surfaces on their own bodies, or on a rigid part's (which
       // stands still).
@@ -387,11 +391,11 @@ namespace rubberdyn
                 const RigidBody &pose = newton->rigid_part_poses()
                   [equilibrium - equilibrium_parts.begin()];
                 std::string free;
-                const char *names[6] = {"x", "y", "z", "rx", "ry", "rz"};
                 for (unsigned int d = 0; d < 6; ++d)
                   if (d < 3 ? model.parts[p].rigid_free_translation[d] :
                               model.parts[p].rigid_free_rotation[d - 3])
-                    free += std::string(free.empty() ? "" : ", ") + names[d];
+                    free += std::string(free.empty() ? "" : ", ") +
+                            rigid_direction_names[d];
                 log << "in equilibrium in " << free
                     << " (unknowns of the load path), about its centre of mass "
                     << pose.reference_position << std::endl;

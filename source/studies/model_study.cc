@@ -12,6 +12,7 @@
 #include <rubberdyn/model/preloaded_simulation.h>
 #include <rubberdyn/model/quasi_static_simulation.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/studies/model_study.h>
 
 #include <algorithm>
@@ -748,9 +749,8 @@ namespace rubberdyn
                   for (const std::string &item :
                        Utilities::split_string_list(rigid_motion))
                     {
-                      const std::string names[6] = {"x", "y", "z",
-                                                    "rx", "ry", "rz"};
-                      const auto found =
+                      const auto &names = model::rigid_direction_names;
+                      const auto  found =
                         std::find(std::begin(names), std::end(names), item);
                       if (found == std::end(names))
                         throw InputError(

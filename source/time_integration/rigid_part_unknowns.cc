@@ -1,11 +1,9 @@
 #include "rigid_part_unknowns.h"
 
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q1.h>
 
-#include <map>
 
 namespace rubberdyn
 {
@@ -25,10 +23,9 @@ namespace rubberdyn
       node_of_dof.assign(n_local, 0);
       component_of_dof.assign(n_local, 0);
 
-      std::map<types::global_dof_index, Point<3>> support_points;
-      DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
-                                           dof_handler,
-                                           support_points);
+      // (The support points of the parts' cells only, not a map of the
+      // whole model's.)
+      const MappingQ1<3>                   mapping;
       const FiniteElement<3, 3>           &fe       = dof_handler.get_fe();
       const unsigned int                   n_points = fe.n_dofs_per_cell() / 3;
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -62,8 +59,8 @@ namespace rubberdyn
                         component_of_dof[local[d]] = d;
                       }
                     nodes.dofs.push_back(local);
-                    nodes.X.push_back(support_points.at(
-                      dofs[fe.component_to_system_index(0, k)]));
+                    nodes.X.push_back(mapping.transform_unit_to_real_cell(
+                      cell, fe.base_element(0).unit_support_point(k)));
                     nodes.owned.push_back(partitioner->in_local_range(
                       dofs[fe.component_to_system_index(0, k)]));
                   }
@@ -117,9 +114,9 @@ namespace rubberdyn
     std::string
     RigidPartUnknowns::describe(const unsigned int j) const
     {
-      const char *names[6] = {"x", "y", "z", "rx", "ry", "rz"};
       return "the rigid part '" + parts[unknowns[j].part].name +
-             "' in its free direction " + names[unknowns[j].direction];
+             "' in its free direction " +
+             model::rigid_direction_names[unknowns[j].direction];
     }
 
 

@@ -7,6 +7,7 @@
 #include <rubberdyn/model/force_contribution.h>
 
 #include <string>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -31,10 +32,13 @@ namespace rubberdyn
     {
     public:
       /**
-       * @param model Its parts' densities and the gravity.
+       * @param model The gravity, and the dofs.
+       * @param masses setup::part_masses() of @p model.
        * @param full_at Pseudo-time at which the full weight acts (> 0).
        */
-      GravityLoad(const Model &model, const double full_at);
+      GravityLoad(const Model                   &model,
+                  const std::vector<VectorType> &masses,
+                  const double                   full_at);
 
       std::string
       name() const override

@@ -17,15 +17,6 @@ namespace rubberdyn
   namespace model
   {
     /**
-     * The converged state of a quasi-static preload from which the
-     * explicit run of `Time integration/Scheme = quasi-static then
-     * explicit` starts (with zero velocity): the displacement, the
-     * elements' material history and the pretension sections' locked
-     * shortenings. What the explicit element force needs to be in
-     * equilibrium at t = 0 is exactly this: it is the quasi-static solver's
-     * own residual function (doc/theory.md, section 10.1).
-     */
-    /**
      * Where the load path left a rigid part in equilibrium: x = c + d +
      * R (X - c) about its centre c.
      */
@@ -40,6 +31,15 @@ namespace rubberdyn
       dealii::Tensor<2, 3> rotation;
     };
 
+    /**
+     * The converged state of a quasi-static preload from which the
+     * explicit run of `Time integration/Scheme = quasi-static then
+     * explicit` starts (with zero velocity): the displacement, the
+     * elements' material history and the pretension sections' locked
+     * shortenings. What the explicit element force needs to be in
+     * equilibrium at t = 0 is exactly this: it is the quasi-static solver's
+     * own residual function (doc/theory.md, section 10.1).
+     */
     struct PreloadState
     {
       /** Displacement (mm; ghosted). */
@@ -69,8 +69,8 @@ namespace rubberdyn
      * The part of a model's parameter text (ExplicitSimulation::
      * model_parameters_text()) that determines the preload: every entry
      * except those only the explicit run reads (initial velocities,
-     * densities, rigid surfaces' masses and motion, the explicit step and
-     * bulk-viscosity settings). A preload checkpoint serves every explicit
+     * densities if there is no gravity, rigid surfaces' masses and motion,
+     * the explicit step and bulk-viscosity settings). A preload checkpoint serves every explicit
      * run whose preload text is the same: another end time, impact
      * velocity or mass.
      *

@@ -131,6 +131,14 @@ namespace rubberdyn
     };
 
     /**
+     * The names of a rigid body's six directions, as `Rigid motion` lists
+     * them: translations x, y, z, then rotations rx, ry, rz about axes
+     * through its centre of mass.
+     */
+    inline constexpr const char *rigid_direction_names[6] = {
+      "x", "y", "z", "rx", "ry", "rz"};
+
+    /**
      * The rotation $\exp([\theta]_\times)$ of the rotation vector
      * @p theta (Rodrigues' formula; exact, orthogonal to round-off).
      */
