@@ -4,11 +4,13 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/model/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
+#include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -534,6 +536,13 @@ namespace rubberdyn
                                         contact_forces);
       for (const auto &forces : contact_forces)
         contributions.push_back(forces.get());
+      // Mortar contact between the mesh's surfaces, one per pair.
+      for (const ContactPairDefinition &pair : model.contact_pairs)
+        {
+          contact_pairs.push_back(
+            std::make_unique<contact::MortarContactPair>(model, pair));
+          contributions.push_back(contact_pairs.back().get());
+        }
 
       // Boundary conditions: one constraint group per component.
       constraints =
@@ -738,6 +747,18 @@ namespace rubberdyn
       add_postprocessor(std::make_unique<InteractionEnergyColumns>(
         model, condition_of_group, surface_loads.get(), condition_of_load,
         surfaces));
+      if (!contact_pairs.empty())
+        {
+          names.clear();
+          std::vector<const contact::MortarContactPair *> pairs;
+          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+            {
+              names.push_back(model.contact_pairs[p].name);
+              pairs.push_back(contact_pairs[p].get());
+            }
+          add_postprocessor(std::make_unique<postprocess::ContactPairColumns>(
+            pairs, names, model.comm));
+        }
       if (!model.pretension_sections.empty())
         {
           names.clear();

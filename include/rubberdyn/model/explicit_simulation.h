@@ -26,6 +26,7 @@ namespace rubberdyn
   {
     class RigidSurfaceContact;
     class RigidSurfaceForces;
+    class MortarContactPair;
   } // namespace contact
   namespace time_integration
   {
@@ -189,6 +190,8 @@ namespace rubberdyn
       std::unique_ptr<elements::SolidHexForces>   element_forces;
       std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
       std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  contact_forces;
+      /** One per `Contact pairs` entry of the model, in its order. */
+      std::vector<std::unique_ptr<contact::MortarContactPair>>   contact_pairs;
       std::vector<RigidBody>                                     bodies;
       /** The lumped mass of the rigid parts' cells, or nullptr. */
       std::unique_ptr<ForceContribution> rigid_part_mass;

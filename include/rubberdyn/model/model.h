@@ -142,6 +142,43 @@ namespace rubberdyn
     };
 
     /**
+     * A contact pair between two surfaces of the mesh (`Contact
+     * pairs/<name>`): segment-to-segment mortar contact
+     * (contact::MortarContactPair).
+     */
+    struct ContactPairDefinition
+    {
+      /** What the pair enforces. */
+      enum class Type
+      {
+        /** Normal contact only. */
+        frictionless,
+        /** Normal contact and Coulomb friction. */
+        coulomb,
+        /** The surfaces are bonded with their initial offset. */
+        tied
+      };
+      /** Name (the columns `<name>_normal_force` etc.). */
+      std::string name;
+      /** Boundary ids of the slave and of the master faces. */
+      std::set<types::boundary_id> slave_boundary_ids, master_boundary_ids;
+      Type type = Type::frictionless;
+      /**
+       * LS-DYNA's FS, FD, DC: mu = FD + (FS - FD) exp(-DC * slip rate)
+       * (-, -, ms/mm).
+       */
+      double static_friction  = 0.;
+      double dynamic_friction = 0.;
+      double decay            = 0.;
+      /** Penalty scale factor s (-). */
+      double penalty_scale = 1.;
+      /** Whether the pass with slave and master swapped is added. */
+      bool two_pass = false;
+      /** Tied: the largest initial gap that is tied (mm). */
+      double tie_tolerance = 0.;
+    };
+
+    /**
      * A bolt pretension section (`Pretension sections/<name>`): a plane
      * across a part, usually a bolt's shank. The elements of the part that
      * the plane cuts carry the section's shortening, driven to a target
@@ -224,6 +261,7 @@ namespace rubberdyn
       std::vector<BoundaryCondition>      boundary_conditions;
       std::vector<RigidSurfaceDefinition> rigid_surfaces;
       std::vector<PretensionSection>      pretension_sections;
+      std::vector<ContactPairDefinition>  contact_pairs;
 
     private:
       /** Set by setup(): the dofs are fe_quadratic's. */

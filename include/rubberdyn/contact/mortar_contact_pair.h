@@ -1,0 +1,200 @@
+#ifndef rubberdyn_contact_mortar_contact_pair_h
+#define rubberdyn_contact_mortar_contact_pair_h
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/contact/mortar_segment.h>
+#include <rubberdyn/model/force_contribution.h>
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace model
+  {
+    class Model;
+    struct ContactPairDefinition;
+  } // namespace model
+
+  namespace contact
+  {
+    /**
+     * What a contact pair did at its last evaluation, this rank's share
+     * (the columns of time_history.csv: postprocess::ContactPairColumns sums
+     * and extremises it over the ranks).
+     */
+    struct ContactPairStatistics
+    {
+      /** Force of the master side on the slave side (kN). */
+      Tensor<1, 3> force;
+      /** Sum of the active slave nodes' normal forces p_a A_a (kN). */
+      double normal_force = 0.;
+      /** Sum of the magnitudes of their tangential forces (kN). */
+      double tangential_force = 0.;
+      /** Largest and smallest nodal pressure of the active nodes (GPa). */
+      double max_pressure = 0.;
+      double min_pressure = std::numeric_limits<double>::max();
+      /** Sum of the active slave nodes' covered areas A_a (mm^2). */
+      double contact_area = 0.;
+      /** Largest penetration, -g_a, of the slave nodes (mm, >= 0). */
+      double max_penetration = 0.;
+      unsigned int active_nodes   = 0;
+      unsigned int slipping_nodes = 0;
+    };
+
+    /**
+     * One contact pair of the Model study (`Contact pairs/<name>`):
+     * segment-to-segment mortar contact between the boundary faces of two
+     * surfaces of deformable or rigid parts (Puso & Laursen, Comput.
+     * Methods Appl. Mech. Engrg. 193 (2004) 601), as a force contribution.
+     *
+     * <h3>Discretisation</h3>
+     * The slave facets are integrated against the master facets they
+     * overlap (integrate_mortar_segment()): D_ab and M_ak give each slave
+     * node a its covered area $A_a = \sum_b D_{ab}$ and weighted gap vector
+     * $\tilde{\mathbf g}_a = \sum_b D_{ab}\mathbf x_b - \sum_k M_{ak}\hat
+     * {\mathbf x}_k$. Its normal gap is the mean over that area, $g_a =
+     * -\mathbf n_a\cdot\tilde{\mathbf g}_a / A_a$ (positive open), with
+     * $\mathbf n_a$ the area-weighted mean of the outward normals of the
+     * slave facets around a.
+     *
+     * <h3>Normal contact (frictionless)</h3>
+     * A penalty on the mean gap: the nodal pressure is $p_a = \varepsilon
+     * \langle -g_a\rangle$, from the potential $\sum_a \tfrac12\varepsilon
+     * A_a \langle -g_a\rangle^2$ with D, M and the normals held over the
+     * step. The slave node b then feels $-\sum_a p_a D_{ab}\mathbf n_a$ and
+     * the master node k $+\sum_a p_a M_{ak}\mathbf n_a$: the two sum to
+     * zero, since $\sum_b D_{ab} = \sum_k M_{ak}$ (momentum is exchanged
+     * exactly), and a uniform gap gives a uniform pressure (the patch
+     * test). The stiffness per area is the pair's
+     * $\varepsilon = s\,\min(\overline{K/h}_{slave}, \overline{K/h}_{master})$,
+     * s the `Penalty scale` and $\overline{K/h}$ the mean over a side's
+     * facets of the bulk modulus of the element under it over its
+     * thickness V/A (GPa/mm).
+     *
+     * <h3>Coulomb friction</h3>
+     * A return mapping on the weighted slip (Puso & Laursen 2004, sect. 5):
+     * the slip increment of node a since the accepted step is
+     * $\Delta\mathbf s_a = (1 - \mathbf n_a\otimes\mathbf n_a)
+     * [\sum_b D_{ab}\Delta\mathbf x_b - \sum_k M_{ak}\Delta\hat{\mathbf
+     * x}_k]/A_a$ (zero for a rigid motion of the touching pair). The
+     * accepted tangential traction, turned into the current tangent plane
+     * with its magnitude kept (objective under rotations), takes the
+     * elastic trial $\mathbf t_T = \mathbf t_T^{old} - \varepsilon\Delta
+     * \mathbf s_a$ and is scaled back to $\mu p_a$ if it exceeds it (slip),
+     * with LS-DYNA's $\mu = FD + (FS - FD)\,e^{-DC\,|\Delta\mathbf
+     * s_a|/\Delta t}$. The friction work of a step is the work done on the
+     * tangential spring (trapezoidal rule) less the change of its energy
+     * $A_a|\mathbf t_T|^2/2\varepsilon$ (which is contact energy); a node
+     * that opens dissipates its spring's energy. The accepted state moves
+     * on in accept_step().
+     *
+     * <h3>Tied contact</h3>
+     * D and M are integrated once, in the reference configuration; every
+     * slave node whose mean gap is within the `Tie tolerance` is tied by a
+     * penalty on the change of its weighted gap vector in all directions,
+     * $\mathbf t_a = -\varepsilon(\tilde{\mathbf g}_a(\mathbf x) -
+     * \tilde{\mathbf g}_a(\mathbf X))/A_a$ (the initial offset is kept).
+     *
+     * <h3>Stable step</h3>
+     * By Gershgorin's bound on the penalty matrix $\varepsilon G^T
+     * A^{-1} G$ (rows of G: $[D_{a\cdot}, -M_{a\cdot}]$, all entries $\ge
+     * 0$), whose row sums are $2\varepsilon\int N_b$: $\Delta t \le
+     * 2/\sqrt{2\varepsilon\max_b (\int N_b\,dA)/m_b}$, with the whole facet
+     * area around each surface node. The explicit solver takes the smaller
+     * of it and the elements' step.
+     *
+     * <h3>Search and parallel</h3>
+     * Every rank keeps both surfaces whole (the facets are gathered once;
+     * their nodes are ghosts of a partitioner of the pair, 4C's
+     * "redundant master" ghosting), and integrates its own slave facets plus
+     * those of other ranks that share a node with them, so that the gaps of
+     * its facets' nodes are complete without a reduction. The forces of its
+     * own facets' segments are added into ghosted entries and compressed.
+     * Candidate master facets come from an R-tree of their bounding boxes
+     * enlarged by a capture margin (half the mean facet diagonal), rebuilt
+     * when a surface node has moved by a quarter of the margin since.
+     *
+     * Self-contact is a pair whose slave and master ids are the same: facets
+     * that share a node are not paired. `Two-pass` adds the pass with the
+     * roles swapped, each pass with half the penalty.
+     */
+    class MortarContactPair : public model::ForceContribution
+    {
+    public:
+      /**
+       * Find the pair's facets (collective) and, for a tied pair, integrate
+       * its segments.
+       *
+       * @throws InputError naming `Contact pairs/<name>/Tie tolerance` if a
+       *   tied pair ties no node.
+       */
+      MortarContactPair(const model::Model                  &model,
+                        const model::ContactPairDefinition &definition);
+
+      ~MortarContactPair() override;
+
+      std::string
+      name() const override;
+
+      Accumulation
+      accumulation() const override;
+
+      void
+      add_forces(const model::EvaluationPoint &point,
+                 VectorType                   &f,
+                 model::ContributionResults   &results) override;
+
+      /** Make the friction state of the last evaluation the accepted one. */
+      void
+      accept_step() override;
+
+      /**
+       * The last evaluation's results (for the columns) and, with
+       * friction, the accepted tractions, positions and friction work.
+       */
+      void
+      save(std::ostream &out) const override;
+
+      /** Read what save() wrote; the next evaluation searches anew. */
+      void
+      load(std::istream &in) override;
+
+      /** This rank's share of the last evaluation. */
+      const ContactPairStatistics &
+      last_statistics() const
+      {
+        return statistics;
+      }
+
+      /**
+       * Energy dissipated by the pair's friction up to the last
+       * evaluation, this rank's nodes (J): 0 for frictionless and tied
+       * pairs.
+       */
+      double
+      friction_work() const;
+
+      /** The pair's penalty stiffness per area of each pass (GPa/mm). */
+      double
+      penalty_stiffness() const;
+
+      /** Number of slave facets of the first pass, all ranks. */
+      unsigned int
+      n_slave_facets() const;
+
+    private:
+      struct Implementation;
+      std::unique_ptr<Implementation> impl;
+      ContactPairStatistics           statistics;
+    };
+  } // namespace contact
+} // namespace rubberdyn
+
+#endif

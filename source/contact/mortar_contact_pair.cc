@@ -1,0 +1,977 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <rubberdyn/base/binary_io.h>
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
+#include <rubberdyn/model/model.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <map>
+#include <tuple>
+
+namespace rubberdyn
+{
+  namespace contact
+  {
+    namespace mortar_internal
+    {
+      /** A facet as gathered from its rank. */
+      struct GatheredFacet
+      {
+        /** Global dofs x, y, z of its corners, in FacetCorners' order. */
+        types::global_dof_index dofs[4][3];
+        /** Reference coordinates of its corners (mm). */
+        double X[4][3];
+        /** Bulk modulus of its element times area over volume (GPa/mm). */
+        double stiffness;
+        /** Rank that owns its cell. */
+        unsigned int rank;
+        /** Bit 0: on the slave surface; bit 1: on the master surface. */
+        unsigned int sides;
+
+        /** For Utilities::MPI::all_gather(). */
+        template <class Archive>
+        void
+        serialize(Archive &archive, const unsigned int)
+        {
+          archive &dofs &X &stiffness &rank &sides;
+        }
+      };
+
+      /** Stored segment of a slave facet that this rank owns. */
+      struct StoredSegment
+      {
+        unsigned int  slave, master;
+        MortarSegment integrals;
+      };
+    } // namespace mortar_internal
+    using namespace mortar_internal;
+
+
+
+    /** Everything behind the interface (the class documentation). */
+    struct MortarContactPair::Implementation
+    {
+      /** One direction of the pair: a slave and a master surface. */
+      struct Pass
+      {
+        std::vector<unsigned int> slave_facets, master_facets;
+        /** Penalty stiffness per area (GPa/mm). */
+        double penalty = 0.;
+        /**
+         * The slave facets this rank integrates (its own and those of other
+         * ranks that share a node with them), ascending, and whether it
+         * owns each.
+         */
+        std::vector<unsigned int> gap_facets;
+        std::vector<bool>         owned;
+        /** Candidate master facets of each gap facet (ascending). */
+        std::vector<std::vector<unsigned int>> candidates;
+        /** The nodes of the gap facets (ascending), and for each its slave
+         * facets (for the normal) in CSR form. */
+        std::vector<unsigned int> nodes, facet_start, node_facets;
+        /** Whether this rank books a node's statistics (by node index). */
+        std::vector<bool> counted;
+        /** Segments of the last evaluation (tied: of the reference). */
+        std::vector<StoredSegment> segments;
+        /** Tied: whether each node (by node index) is tied, and its
+         * covered area in the reference configuration (mm^2). */
+        std::vector<bool>   tied;
+        std::vector<double> tied_area;
+        /**
+         * Coulomb, by node index: the tangential traction (GPa) and the
+         * energy in its spring (J), of the last accepted step and of the
+         * last evaluation.
+         */
+        std::vector<Tensor<1, 3>> accepted_tangential, trial_tangential;
+        std::vector<double>       accepted_spring_energy, trial_spring_energy;
+      };
+
+      Implementation(const model::Model                  &model,
+                     const model::ContactPairDefinition &definition);
+
+      /** Positions x = X + u of every surface node. */
+      void
+      update_positions(const VectorType &u_pair);
+
+      /** Rebuild the candidate lists if a node moved far enough. */
+      void
+      search_if_needed();
+
+      /** Integrate the segments of @p pass at the current positions. */
+      void
+      integrate(Pass &pass, const bool keep_all);
+
+      /** The nodal normals of @p pass's nodes at the current positions. */
+      void
+      compute_normals(const Pass &pass);
+
+      /** Whether facets f and g share a corner. */
+      bool
+      share_a_node(const unsigned int f, const unsigned int g) const;
+
+      const model::ContactPairDefinition &definition;
+      MPI_Comm                            comm;
+      unsigned int                        my_rank;
+
+      std::vector<GatheredFacet> facets;
+      /** Corners' node indices of each facet. */
+      std::vector<std::array<unsigned int, 4>> facet_nodes;
+      /** Per node: local indices (pair partitioner) of x, y, z; X. */
+      std::vector<std::array<unsigned int, 3>> node_dofs;
+      std::vector<Point<3>>                    node_reference;
+      std::vector<Point<3>>                    x, x_at_search;
+      /**
+       * Per node: the sum over passes of the penalty times the whole facet
+       * area around it, its side's int N dA (kN/mm).
+       */
+      std::vector<double> node_stiffness;
+
+      /** Area of facet @p f in the reference configuration (mm^2). */
+      double
+      facet_area(const unsigned int f) const
+      {
+        const GatheredFacet &facet = facets[f];
+        Tensor<1, 3>         d1, d2;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            d1[d] = facet.X[2][d] - facet.X[0][d];
+            d2[d] = facet.X[3][d] - facet.X[1][d];
+          }
+        return 0.5 * cross_product_3d(d1, d2).norm();
+      }
+
+      std::vector<Pass> passes;
+      /** Capture margin of the search (mm). */
+      double margin = 0.;
+      bool   searched = false;
+
+      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+      VectorType u_pair, f_pair;
+
+      /** Scratch by node index: covered area, weighted gap, normal,
+       * traction. */
+      std::vector<double>       area;
+      std::vector<Tensor<1, 3>> gap, normal, traction;
+
+      /** Stable step of the penalty (ms), once the masses are known. */
+      double time_step = -1.;
+
+      /** Coulomb: whether the pair has friction. */
+      bool coulomb = false;
+      /** Coulomb: the weighted slip increment since the accepted step
+       * (mm^3: times the covered area), by node index. */
+      std::vector<Tensor<1, 3>> slip;
+      /** Coulomb: node positions and time of the last accepted step. */
+      std::vector<Point<3>> x_accepted;
+      double                time_accepted = 0.;
+      /** Coulomb: friction work up to the accepted step, and of the last
+       * evaluation, this rank's booked nodes (J). */
+      double accepted_friction_work = 0., trial_dissipation = 0.;
+      /** Time of the last evaluation; whether it awaits accept_step(). */
+      double trial_time    = 0.;
+      bool   trial_pending = false;
+      /** Energy in the pair's springs at the last evaluation (J). */
+      double energy = 0.;
+    };
+
+
+
+    MortarContactPair::Implementation::Implementation(
+      const model::Model                  &model,
+      const model::ContactPairDefinition &definition)
+      : definition(definition)
+      , comm(model.comm)
+      , my_rank(Utilities::MPI::this_mpi_process(model.comm))
+    {
+      AssertThrow(!model.uses_mixed_up(),
+                  ExcMessage("mortar contact pairs need the Q1 dofs"));
+      // This rank's facets, then all of them, in an order that does not
+      // depend on the partition (by their centres).
+      std::vector<GatheredFacet> own;
+      const FiniteElement<3> &fe = model.dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : model.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int face : cell->face_indices())
+            if (cell->at_boundary(face))
+              {
+                const types::boundary_id id = cell->face(face)->boundary_id();
+                const unsigned int sides =
+                  (definition.slave_boundary_ids.count(id) ? 1u : 0u) |
+                  (definition.master_boundary_ids.count(id) ? 2u : 0u);
+                if (sides == 0)
+                  continue;
+                cell->get_dof_indices(dofs);
+                GatheredFacet facet;
+                // The face's lexicographic vertices 0, 1, 3, 2 go round it.
+                constexpr unsigned int cyclic[4] = {0, 1, 3, 2};
+                unsigned int           vertex[4];
+                for (unsigned int c = 0; c < 4; ++c)
+                  vertex[c] =
+                    GeometryInfo<3>::face_to_cell_vertices(face, cyclic[c]);
+                // Outward: turn the order round if the normal points into
+                // the cell.
+                const Tensor<1, 3> n = cross_product_3d(
+                  cell->vertex(vertex[2]) - cell->vertex(vertex[0]),
+                  cell->vertex(vertex[3]) - cell->vertex(vertex[1]));
+                if (n * (cell->face(face)->center() - cell->center()) < 0.)
+                  std::swap(vertex[1], vertex[3]);
+                for (unsigned int c = 0; c < 4; ++c)
+                  {
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        facet.dofs[c][d] =
+                          dofs[fe.component_to_system_index(d, vertex[c])];
+                        facet.X[c][d] = cell->vertex(vertex[c])[d];
+                      }
+                  }
+                const model::Part &part =
+                  model.parts[model.part_of_material_id(cell->material_id())];
+                facet.stiffness = part.law->bulk_modulus() *
+                                  cell->face(face)->measure() /
+                                  cell->measure();
+                facet.rank  = my_rank;
+                facet.sides = sides;
+                own.push_back(facet);
+              }
+      for (const std::vector<GatheredFacet> &from_rank :
+           Utilities::MPI::all_gather(comm, own))
+        facets.insert(facets.end(), from_rank.begin(), from_rank.end());
+      const auto centre_key = [](const GatheredFacet &f) {
+        std::array<double, 3> c{};
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            c[d] += 0.25 * f.X[a][d];
+        return c;
+      };
+      std::sort(facets.begin(),
+                facets.end(),
+                [&](const GatheredFacet &a, const GatheredFacet &b) {
+                  const auto ka = centre_key(a), kb = centre_key(b);
+                  if (ka != kb)
+                    return ka < kb;
+                  return a.sides < b.sides;
+                });
+
+      // The nodes, numbered in the order of the facets.
+      std::map<types::global_dof_index, unsigned int> node_of_dof;
+      IndexSet ghosts(model.dof_handler.n_dofs());
+      facet_nodes.resize(facets.size());
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        for (unsigned int c = 0; c < 4; ++c)
+          {
+            const auto [it, inserted] =
+              node_of_dof.emplace(facets[f].dofs[c][0], node_dofs.size());
+            if (inserted)
+              {
+                node_dofs.push_back({});
+                node_reference.emplace_back(facets[f].X[c][0],
+                                            facets[f].X[c][1],
+                                            facets[f].X[c][2]);
+                for (unsigned int d = 0; d < 3; ++d)
+                  if (!model.partitioner->in_local_range(facets[f].dofs[c][d]))
+                    ghosts.add_index(facets[f].dofs[c][d]);
+              }
+            facet_nodes[f][c] = it->second;
+          }
+      ghosts.compress();
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        model.partitioner->locally_owned_range(), ghosts, comm);
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        for (unsigned int c = 0; c < 4; ++c)
+          for (unsigned int d = 0; d < 3; ++d)
+            node_dofs[facet_nodes[f][c]][d] =
+              partitioner->global_to_local(facets[f].dofs[c][d]);
+      u_pair.reinit(partitioner);
+      f_pair.reinit(partitioner);
+      const unsigned int n_nodes = node_dofs.size();
+      x = node_reference;
+      area.assign(n_nodes, 0.);
+      gap.assign(n_nodes, Tensor<1, 3>());
+      normal.assign(n_nodes, Tensor<1, 3>());
+      traction.assign(n_nodes, Tensor<1, 3>());
+      coulomb =
+        definition.type == model::ContactPairDefinition::Type::coulomb;
+      if (coulomb)
+        {
+          slip.assign(n_nodes, Tensor<1, 3>());
+          x_accepted = node_reference;
+        }
+      node_stiffness.assign(n_nodes, 0.);
+
+      // The passes: slave -> master, and back for two-pass.
+      std::vector<unsigned int> side_facets[2];
+      double                    mean_stiffness[2] = {0., 0.};
+      double                    diagonal          = 0.;
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        {
+          const GatheredFacet &facet = facets[f];
+          diagonal += std::hypot(facet.X[2][0] - facet.X[0][0],
+                                 facet.X[2][1] - facet.X[0][1],
+                                 facet.X[2][2] - facet.X[0][2]);
+          for (unsigned int side = 0; side < 2; ++side)
+            if (facet.sides & (1u << side))
+              {
+                side_facets[side].push_back(f);
+                mean_stiffness[side] += facet.stiffness;
+              }
+        }
+      for (unsigned int side = 0; side < 2; ++side)
+        if (!side_facets[side].empty())
+          mean_stiffness[side] /= side_facets[side].size();
+      margin = facets.empty() ? 0. : 0.5 * diagonal / facets.size();
+      margin = std::max(margin, definition.tie_tolerance);
+      const double penalty = definition.penalty_scale *
+                             std::min(mean_stiffness[0], mean_stiffness[1]);
+      const unsigned int n_passes = definition.two_pass ? 2 : 1;
+      passes.resize(n_passes);
+      for (unsigned int p = 0; p < n_passes; ++p)
+        {
+          Pass &pass         = passes[p];
+          pass.slave_facets  = side_facets[p];
+          pass.master_facets = side_facets[1 - p];
+          pass.penalty       = penalty / n_passes;
+
+          // Which rank books a node: the lowest that owns a slave facet
+          // around it; the gap facets: own ones and their neighbours.
+          std::vector<unsigned int> booking_rank(
+            n_nodes, std::numeric_limits<unsigned int>::max());
+          std::vector<bool> near_own(n_nodes, false);
+          for (const unsigned int f : pass.slave_facets)
+            for (const unsigned int node : facet_nodes[f])
+              {
+                booking_rank[node] = std::min(booking_rank[node], facets[f].rank);
+                if (facets[f].rank == my_rank)
+                  near_own[node] = true;
+              }
+          pass.counted.assign(n_nodes, false);
+          for (unsigned int n = 0; n < n_nodes; ++n)
+            pass.counted[n] = booking_rank[n] == my_rank;
+          for (const unsigned int f : pass.slave_facets)
+            {
+              bool near = false;
+              for (const unsigned int node : facet_nodes[f])
+                near = near || near_own[node];
+              if (near)
+                {
+                  pass.gap_facets.push_back(f);
+                  pass.owned.push_back(facets[f].rank == my_rank);
+                }
+            }
+          // The gap facets' nodes and, for each, its slave facets.
+          std::map<unsigned int, std::vector<unsigned int>> facets_of_node;
+          for (const unsigned int f : pass.gap_facets)
+            for (const unsigned int node : facet_nodes[f])
+              facets_of_node[node];
+          for (const unsigned int f : pass.slave_facets)
+            for (const unsigned int node : facet_nodes[f])
+              {
+                const auto it = facets_of_node.find(node);
+                if (it != facets_of_node.end())
+                  it->second.push_back(f);
+              }
+          pass.facet_start.push_back(0);
+          for (const auto &[node, around] : facets_of_node)
+            {
+              pass.nodes.push_back(node);
+              pass.node_facets.insert(pass.node_facets.end(),
+                                      around.begin(),
+                                      around.end());
+              pass.facet_start.push_back(pass.node_facets.size());
+            }
+          pass.candidates.resize(pass.gap_facets.size());
+          if (coulomb)
+            {
+              pass.accepted_tangential.assign(n_nodes, Tensor<1, 3>());
+              pass.trial_tangential.assign(n_nodes, Tensor<1, 3>());
+              pass.accepted_spring_energy.assign(n_nodes, 0.);
+              pass.trial_spring_energy.assign(n_nodes, 0.);
+            }
+
+          // The penalty times the facet area around each node (the
+          // stable step).
+          for (const unsigned int side : {0u, 1u})
+            for (const unsigned int f :
+                 side == 0 ? pass.slave_facets : pass.master_facets)
+              for (const unsigned int node : facet_nodes[f])
+                node_stiffness[node] += pass.penalty * 0.25 * facet_area(f);
+        }
+    }
+
+
+
+    bool
+    MortarContactPair::Implementation::share_a_node(const unsigned int f,
+                                                    const unsigned int g) const
+    {
+      for (const unsigned int a : facet_nodes[f])
+        for (const unsigned int b : facet_nodes[g])
+          if (a == b)
+            return true;
+      return false;
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::update_positions(const VectorType &u)
+    {
+      for (unsigned int n = 0; n < node_dofs.size(); ++n)
+        for (unsigned int d = 0; d < 3; ++d)
+          x[n][d] = node_reference[n][d] + u.local_element(node_dofs[n][d]);
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::search_if_needed()
+    {
+      if (searched)
+        {
+          double moved = 0.;
+          for (unsigned int n = 0; n < x.size(); ++n)
+            moved = std::max(moved, x[n].distance_square(x_at_search[n]));
+          if (std::sqrt(moved) <= 0.25 * margin)
+            return;
+        }
+      const auto box_of = [&](const unsigned int f) {
+        Point<3> low = x[facet_nodes[f][0]], high = low;
+        for (const unsigned int node : facet_nodes[f])
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              low[d]  = std::min(low[d], x[node][d]);
+              high[d] = std::max(high[d], x[node][d]);
+            }
+        BoundingBox<3> box(std::make_pair(low, high));
+        box.extend(margin);
+        return box;
+      };
+      std::vector<unsigned int> hits;
+      for (Pass &pass : passes)
+        {
+          std::vector<BoundingBox<3>> master_boxes;
+          master_boxes.reserve(pass.master_facets.size());
+          for (const unsigned int f : pass.master_facets)
+            master_boxes.push_back(box_of(f));
+          const auto tree = pack_rtree_of_indices(master_boxes);
+          for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
+            {
+              const unsigned int slave = pass.gap_facets[i];
+              hits.clear();
+              tree.query(boost::geometry::index::intersects(box_of(slave)),
+                         std::back_inserter(hits));
+              std::vector<unsigned int> &candidates = pass.candidates[i];
+              candidates.clear();
+              for (const unsigned int h : hits)
+                if (!share_a_node(slave, pass.master_facets[h]))
+                  candidates.push_back(pass.master_facets[h]);
+              std::sort(candidates.begin(), candidates.end());
+            }
+        }
+      x_at_search = x;
+      searched    = true;
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::compute_normals(const Pass &pass)
+    {
+      for (unsigned int i = 0; i < pass.nodes.size(); ++i)
+        {
+          Tensor<1, 3> n;
+          for (unsigned int j = pass.facet_start[i];
+               j < pass.facet_start[i + 1];
+               ++j)
+            {
+              const auto &c = facet_nodes[pass.node_facets[j]];
+              n += cross_product_3d(x[c[2]] - x[c[0]], x[c[3]] - x[c[1]]);
+            }
+          normal[pass.nodes[i]] = n / n.norm();
+        }
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::integrate(Pass &pass,
+                                                 const bool keep_all)
+    {
+      for (const unsigned int node : pass.nodes)
+        {
+          area[node] = 0.;
+          gap[node]  = Tensor<1, 3>();
+          if (coulomb)
+            slip[node] = Tensor<1, 3>();
+        }
+      pass.segments.clear();
+      // Segments farther apart than this are not the contact's (the back
+      // of a thin part, a fold): left out whatever the search found.
+      const double reach = std::max(margin, definition.tie_tolerance);
+      FacetCorners   slave_corners, master_corners;
+      MortarSegment  segment;
+      Tensor<1, 3>   weighted[4];
+      for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
+        {
+          const auto &s = facet_nodes[pass.gap_facets[i]];
+          for (unsigned int a = 0; a < 4; ++a)
+            slave_corners[a] = x[s[a]];
+          Tensor<1, 3> facet_normal =
+            cross_product_3d(slave_corners[2] - slave_corners[0],
+                             slave_corners[3] - slave_corners[1]);
+          facet_normal /= facet_normal.norm();
+          for (const unsigned int m : pass.candidates[i])
+            {
+              const auto &mc = facet_nodes[m];
+              for (unsigned int k = 0; k < 4; ++k)
+                master_corners[k] = x[mc[k]];
+              if (!integrate_mortar_segment(slave_corners,
+                                            master_corners,
+                                            segment))
+                continue;
+              Tensor<1, 3> total;
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  weighted[a] = Tensor<1, 3>();
+                  for (unsigned int b = 0; b < 4; ++b)
+                    weighted[a] += segment.D[a][b] * slave_corners[b] -
+                                   segment.M[a][b] * master_corners[b];
+                  total += weighted[a];
+                }
+              if (std::abs(facet_normal * total) > reach * segment.area)
+                continue;
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  for (unsigned int b = 0; b < 4; ++b)
+                    area[s[a]] += segment.D[a][b];
+                  gap[s[a]] += weighted[a];
+                }
+              if (coulomb)
+                for (unsigned int a = 0; a < 4; ++a)
+                  for (unsigned int b = 0; b < 4; ++b)
+                    slip[s[a]] +=
+                      segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
+                      segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]);
+              if (keep_all || pass.owned[i])
+                pass.segments.push_back({i, m, segment});
+            }
+        }
+    }
+
+
+
+    MortarContactPair::MortarContactPair(
+      const model::Model                  &model,
+      const model::ContactPairDefinition &definition)
+      : impl(std::make_unique<Implementation>(model, definition))
+    {
+      if (definition.type != model::ContactPairDefinition::Type::tied)
+        return;
+      // Tied: the segments of the reference configuration, for good.
+      Implementation &I = *impl;
+      I.search_if_needed();
+      unsigned int n_tied = 0;
+      for (Implementation::Pass &pass : I.passes)
+        {
+          I.integrate(pass, true);
+          I.compute_normals(pass);
+          pass.tied.assign(I.x.size(), false);
+          pass.tied_area.assign(I.x.size(), 0.);
+          for (const unsigned int node : pass.nodes)
+            if (I.area[node] > 0.)
+              {
+                const double g = -(I.normal[node] * I.gap[node]) / I.area[node];
+                if (std::abs(g) <= definition.tie_tolerance + 1e-9 * I.margin)
+                  {
+                    pass.tied[node]      = true;
+                    pass.tied_area[node] = I.area[node];
+                    if (pass.counted[node])
+                      ++n_tied;
+                  }
+              }
+        }
+      if (Utilities::MPI::sum(n_tied, I.comm) == 0)
+        throw InputError("Contact pairs/" + definition.name + "/Tie tolerance",
+                         "no slave node lies within " +
+                           Utilities::to_string(definition.tie_tolerance) +
+                           " mm of the master surface: the tied pair ties "
+                           "nothing (raise the tolerance or check the "
+                           "boundary ids)");
+    }
+
+
+
+    MortarContactPair::~MortarContactPair() = default;
+
+
+
+    std::string
+    MortarContactPair::name() const
+    {
+      return "contact pair " + impl->definition.name;
+    }
+
+
+
+    model::ForceContribution::Accumulation
+    MortarContactPair::accumulation() const
+    {
+      return Accumulation::external_owned;
+    }
+
+
+
+    double
+    MortarContactPair::penalty_stiffness() const
+    {
+      return impl->passes.empty() ? 0. : impl->passes[0].penalty;
+    }
+
+
+
+    double
+    MortarContactPair::friction_work() const
+    {
+      return impl->accepted_friction_work + impl->trial_dissipation;
+    }
+
+
+
+    unsigned int
+    MortarContactPair::n_slave_facets() const
+    {
+      return impl->passes.empty() ? 0 : impl->passes[0].slave_facets.size();
+    }
+
+
+
+    void
+    MortarContactPair::add_forces(const model::EvaluationPoint &point,
+                                  VectorType                   &f,
+                                  model::ContributionResults   &results)
+    {
+      Implementation &I    = *impl;
+      const bool      tied =
+        I.definition.type == model::ContactPairDefinition::Type::tied;
+      I.u_pair.copy_locally_owned_data_from(point.displacement);
+      I.u_pair.update_ghost_values();
+      I.update_positions(I.u_pair);
+      if (I.time_step < 0.)
+        {
+          // The masses do not change during a run: the bound once.
+          VectorType mass(I.partitioner);
+          mass.copy_locally_owned_data_from(point.mass);
+          mass.update_ghost_values();
+          double largest = 0.;
+          for (unsigned int n = 0; n < I.x.size(); ++n)
+            largest = std::max(largest,
+                               I.node_stiffness[n] /
+                                 mass.local_element(I.node_dofs[n][0]));
+          I.time_step = largest > 0. ? 2. / std::sqrt(2. * largest) :
+                                       std::numeric_limits<double>::max();
+        }
+      if (!tied)
+        I.search_if_needed();
+
+      statistics         = ContactPairStatistics();
+      double energy      = 0.;
+      double dissipation = 0.;
+      I.f_pair           = 0.;
+      for (Implementation::Pass &pass : I.passes)
+        {
+          if (tied)
+            {
+              // The change of each tied node's weighted gap vector: the
+              // reference integrals times the displacements.
+              for (const unsigned int node : pass.nodes)
+                I.gap[node] = Tensor<1, 3>();
+              for (const StoredSegment &s : pass.segments)
+                {
+                  const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
+                  const auto &mn = I.facet_nodes[s.master];
+                  for (unsigned int a = 0; a < 4; ++a)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      I.gap[sn[a]] +=
+                        s.integrals.D[a][b] *
+                          (I.x[sn[b]] - I.node_reference[sn[b]]) -
+                        s.integrals.M[a][b] *
+                          (I.x[mn[b]] - I.node_reference[mn[b]]);
+                }
+              I.compute_normals(pass);
+              for (const unsigned int node : pass.nodes)
+                {
+                  I.traction[node] = Tensor<1, 3>();
+                  if (!pass.tied[node])
+                    continue;
+                  const double       A    = pass.tied_area[node];
+                  const Tensor<1, 3> mean = I.gap[node] / A;
+                  I.traction[node]        = -pass.penalty * mean;
+                  if (pass.counted[node])
+                    {
+                      energy += 0.5 * pass.penalty * A * (mean * mean);
+                      const double p = -(I.traction[node] * I.normal[node]);
+                      const Tensor<1, 3> t =
+                        I.traction[node] + p * I.normal[node];
+                      statistics.normal_force += p * A;
+                      statistics.tangential_force += t.norm() * A;
+                      statistics.max_pressure =
+                        std::max(statistics.max_pressure, p);
+                      statistics.min_pressure =
+                        std::min(statistics.min_pressure, p);
+                      statistics.contact_area += A;
+                      statistics.max_penetration =
+                        std::max(statistics.max_penetration,
+                                 I.normal[node] * mean);
+                      ++statistics.active_nodes;
+                    }
+                }
+            }
+          else
+            {
+              I.integrate(pass, false);
+              I.compute_normals(pass);
+              const model::ContactPairDefinition &def = I.definition;
+              const double step = point.time - I.time_accepted;
+              for (const unsigned int node : pass.nodes)
+                {
+                  I.traction[node] = Tensor<1, 3>();
+                  const double A   = I.area[node];
+                  const double g =
+                    A > 0. ? -(I.normal[node] * I.gap[node]) / A : 0.;
+                  if (A > 0. && pass.counted[node])
+                    statistics.max_penetration =
+                      std::max(statistics.max_penetration, -g);
+                  if (!(A > 0.) || !(g < 0.))
+                    {
+                      // Open: a frictional node forgets its spring, whose
+                      // energy is dissipated.
+                      if (I.coulomb)
+                        {
+                          pass.trial_tangential[node]    = Tensor<1, 3>();
+                          pass.trial_spring_energy[node] = 0.;
+                          if (pass.counted[node])
+                            dissipation += pass.accepted_spring_energy[node];
+                        }
+                      continue;
+                    }
+                  const Tensor<1, 3> &n = I.normal[node];
+                  const double        p = -pass.penalty * g;
+                  I.traction[node]      = -p * n;
+                  Tensor<1, 3> tangential;
+                  bool         slipping = false;
+                  if (I.coulomb)
+                    {
+                      // Return mapping on the weighted slip (Puso & Laursen
+                      // 2004, sect. 5): the accepted traction turned into
+                      // the current tangent plane, its magnitude kept, then
+                      // the elastic trial and the Coulomb cone.
+                      const Tensor<1, 3> &accepted =
+                        pass.accepted_tangential[node];
+                      Tensor<1, 3> old = accepted - (accepted * n) * n;
+                      if (old.norm() > 0.)
+                        old *= accepted.norm() / old.norm();
+                      Tensor<1, 3> increment = I.slip[node] / A;
+                      increment -= (increment * n) * n;
+                      tangential = old - pass.penalty * increment;
+                      const double rate =
+                        step > 0. ? increment.norm() / step : 0.;
+                      const double mu =
+                        def.dynamic_friction +
+                        (def.static_friction - def.dynamic_friction) *
+                          std::exp(-def.decay * rate);
+                      const double limit = mu * p;
+                      if (tangential.norm() > limit)
+                        {
+                          tangential *= limit / tangential.norm();
+                          slipping = true;
+                        }
+                      I.traction[node] += tangential;
+                      pass.trial_tangential[node] = tangential;
+                      const double spring =
+                        0.5 * A * (tangential * tangential) / pass.penalty;
+                      pass.trial_spring_energy[node] = spring;
+                      if (pass.counted[node])
+                        {
+                          // The work done on the spring over the step
+                          // (trapezoidal) less what it stores.
+                          dissipation += -0.5 * A * ((old + tangential) *
+                                                     increment) -
+                                         (spring -
+                                          pass.accepted_spring_energy[node]);
+                          energy += spring;
+                        }
+                    }
+                  if (pass.counted[node])
+                    {
+                      energy += 0.5 * pass.penalty * A * g * g;
+                      statistics.normal_force += p * A;
+                      statistics.tangential_force += tangential.norm() * A;
+                      statistics.max_pressure =
+                        std::max(statistics.max_pressure, p);
+                      statistics.min_pressure =
+                        std::min(statistics.min_pressure, p);
+                      statistics.contact_area += A;
+                      ++statistics.active_nodes;
+                      if (slipping)
+                        ++statistics.slipping_nodes;
+                    }
+                }
+            }
+
+          // The forces of this rank's segments: D t on the slave side, -M t
+          // on the master side.
+          for (const StoredSegment &s : pass.segments)
+            {
+              if (!pass.owned[s.slave])
+                continue;
+              const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
+              const auto &mn = I.facet_nodes[s.master];
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  const Tensor<1, 3> &t = I.traction[sn[a]];
+                  if (t.norm_square() == 0.)
+                    continue;
+                  for (unsigned int b = 0; b < 4; ++b)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const double on_slave = s.integrals.D[a][b] * t[d];
+                        I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
+                          on_slave;
+                        statistics.force[d] += on_slave;
+                        I.f_pair.local_element(I.node_dofs[mn[b]][d]) -=
+                          s.integrals.M[a][b] * t[d];
+                      }
+                }
+            }
+        }
+      I.f_pair.compress(VectorOperation::add);
+      const unsigned int n_owned = I.partitioner->locally_owned_size();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        f.local_element(i) += I.f_pair.local_element(i);
+      results.contact_energy += energy;
+      results.friction_dissipation += dissipation;
+      results.contact_time_step =
+        std::min(results.contact_time_step, I.time_step);
+      I.energy            = energy;
+      I.trial_dissipation = dissipation;
+      I.trial_time        = point.time;
+      I.trial_pending     = true;
+    }
+
+
+
+    void
+    MortarContactPair::accept_step()
+    {
+      Implementation &I = *impl;
+      if (!I.trial_pending || !I.coulomb)
+        return;
+      for (Implementation::Pass &pass : I.passes)
+        for (const unsigned int node : pass.nodes)
+          {
+            pass.accepted_tangential[node]    = pass.trial_tangential[node];
+            pass.accepted_spring_energy[node] = pass.trial_spring_energy[node];
+          }
+      I.x_accepted    = I.x;
+      I.time_accepted = I.trial_time;
+      I.accepted_friction_work += I.trial_dissipation;
+      I.trial_dissipation = 0.;
+      I.trial_pending     = false;
+    }
+
+
+
+    void
+    MortarContactPair::save(std::ostream &out) const
+    {
+      const Implementation &I = *impl;
+      // What the columns show of the last evaluation, for an identical
+      // first row after a restart.
+      const double shown[] = {statistics.force[0],
+                              statistics.force[1],
+                              statistics.force[2],
+                              statistics.normal_force,
+                              statistics.tangential_force,
+                              statistics.max_pressure,
+                              statistics.min_pressure,
+                              statistics.contact_area,
+                              statistics.max_penetration,
+                              double(statistics.active_nodes),
+                              double(statistics.slipping_nodes),
+                              I.energy};
+      binary_io::write_doubles(out, shown, std::size(shown));
+      if (!I.coulomb || I.x.empty())
+        return;
+      // Friction's history: the accepted tractions and spring energies,
+      // the accepted positions and time, the friction work.
+      for (const Implementation::Pass &pass : I.passes)
+        {
+          binary_io::write_doubles(out,
+                                   &pass.accepted_tangential[0][0],
+                                   3 * pass.accepted_tangential.size());
+          binary_io::write_doubles(out,
+                                   pass.accepted_spring_energy.data(),
+                                   pass.accepted_spring_energy.size());
+        }
+      binary_io::write_doubles(out, &I.x_accepted[0][0], 3 * I.x.size());
+      binary_io::write_doubles(out, &I.time_accepted, 1);
+      binary_io::write_doubles(out, &I.accepted_friction_work, 1);
+    }
+
+
+
+    void
+    MortarContactPair::load(std::istream &in)
+    {
+      Implementation &I = *impl;
+      double          shown[12];
+      binary_io::read_doubles(in, shown, 12, "contact pair results");
+      statistics.force[0]        = shown[0];
+      statistics.force[1]        = shown[1];
+      statistics.force[2]        = shown[2];
+      statistics.normal_force    = shown[3];
+      statistics.tangential_force = shown[4];
+      statistics.max_pressure    = shown[5];
+      statistics.min_pressure    = shown[6];
+      statistics.contact_area    = shown[7];
+      statistics.max_penetration = shown[8];
+      statistics.active_nodes    = static_cast<unsigned int>(shown[9]);
+      statistics.slipping_nodes  = static_cast<unsigned int>(shown[10]);
+      I.energy                   = shown[11];
+      // The candidates are found anew from the loaded positions (the
+      // segments do not depend on which extra candidates a search keeps).
+      I.searched = false;
+      if (!I.coulomb || I.x.empty())
+        return;
+      for (Implementation::Pass &pass : I.passes)
+        {
+          binary_io::read_doubles(in,
+                                  &pass.accepted_tangential[0][0],
+                                  3 * pass.accepted_tangential.size(),
+                                  "contact pair tractions");
+          binary_io::read_doubles(in,
+                                  pass.accepted_spring_energy.data(),
+                                  pass.accepted_spring_energy.size(),
+                                  "contact pair spring energies");
+        }
+      binary_io::read_doubles(in,
+                              &I.x_accepted[0][0],
+                              3 * I.x.size(),
+                              "contact pair positions");
+      binary_io::read_doubles(in, &I.time_accepted, 1, "contact pair time");
+      binary_io::read_doubles(in,
+                              &I.accepted_friction_work,
+                              1,
+                              "contact pair friction work");
+      I.trial_dissipation = 0.;
+      I.trial_pending     = false;
+    }
+  } // namespace contact
+} // namespace rubberdyn
