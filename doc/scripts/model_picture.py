@@ -4,7 +4,8 @@ told apart.
 
 Usage:
     xvfb-run -a pvbatch doc/scripts/model_picture.py DIR --png FILE.png \
-        [--time T] [--field NAME] [--coloured-part ID] [--title TEXT]
+        [--time T] [--field NAME] [--coloured-part ID] [--title TEXT] \
+        [--camera X,Y,Z] [--hide-others]
 
 Opens DIR/solution.pvd (or DIR/solution.xdmf), goes to the time step nearest
 to T ms (default: the last), warps the mesh by `displacement` (true scale)
@@ -29,7 +30,8 @@ from paraview.simple import (Calculator, ColorBy, Delete, GetActiveCamera,
 
 # Units of the fields rubberdyn writes (postprocess::FieldOutput).
 UNITS = {"von_mises_stress": "GPa", "pressure": "GPa", "J": "-",
-         "cauchy_stress_zz": "GPa", "displacement": "mm"}
+         "cauchy_stress_zz": "GPa", "displacement": "mm",
+         "contact_pressure": "GPa", "contact_gap": "mm", "contact_slip": "mm"}
 
 
 def time_steps(reader):
@@ -67,6 +69,8 @@ def main():
     parser.add_argument("--field", default="von_mises_stress")
     parser.add_argument("--coloured-part", type=int, default=0)
     parser.add_argument("--title")
+    parser.add_argument("--camera", default="55,-45,30")
+    parser.add_argument("--hide-others", action="store_true")
     args = parser.parse_args()
 
     index = None
@@ -111,6 +115,7 @@ def main():
                          args.coloured_part, True), view)
     coloured.SetRepresentationType("Surface With Edges")
     coloured.EdgeColor = [0.15, 0.15, 0.15]
+    coloured.Ambient = 0.3  # faces turned from the light stay readable
     ColorBy(coloured, (where, field))
     coloured.RescaleTransferFunctionToDataRange(False, True)
     coloured.SetScalarBarVisibility(view, True)
@@ -120,12 +125,13 @@ def main():
     bar.TitleColor = bar.LabelColor = [0., 0., 0.]
     bar.RangeLabelFormat = "%-#6.2g"
 
-    others = Show(part(warp, association(reader, "part_id"),
-                       args.coloured_part, False), view)
-    others.SetRepresentationType("Surface With Edges")
-    others.ColorArrayName = ["POINTS", ""]
-    others.AmbientColor = others.DiffuseColor = [0.72, 0.74, 0.78]
-    others.EdgeColor = [0.15, 0.15, 0.15]
+    if not args.hide_others:
+        others = Show(part(warp, association(reader, "part_id"),
+                           args.coloured_part, False), view)
+        others.SetRepresentationType("Surface With Edges")
+        others.ColorArrayName = ["POINTS", ""]
+        others.AmbientColor = others.DiffuseColor = [0.72, 0.74, 0.78]
+        others.EdgeColor = [0.15, 0.15, 0.15]
 
     # "\n" in --title starts a new line.
     title = Text(Text=args.title.replace("\\n", "\n") if args.title else
@@ -138,7 +144,7 @@ def main():
 
     camera = GetActiveCamera()
     camera.SetFocalPoint(10., 10., 5.)
-    camera.SetPosition(55., -45., 30.)
+    camera.SetPosition(*[float(c) for c in args.camera.split(",")])
     camera.SetViewUp(0., 0., 1.)
     ResetCamera()
     camera.Zoom(1.2)

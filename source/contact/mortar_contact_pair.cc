@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <iterator>
 #include <map>
@@ -91,6 +92,12 @@ namespace rubberdyn
          */
         std::vector<Tensor<1, 3>> accepted_tangential, trial_tangential;
         std::vector<double>       accepted_spring_energy, trial_spring_energy;
+        /** Coulomb: the distance each node has slipped (mm), accepted and
+         * trial. */
+        std::vector<double> accepted_slip_distance, trial_slip_distance;
+        /** By node index, of the last evaluation: pressure (GPa) and mean
+         * gap (mm, 0 where nothing is covered), for ParaView. */
+        std::vector<double> shown_pressure, shown_gap;
       };
 
       Implementation(const model::Model                  &model,
@@ -116,8 +123,9 @@ namespace rubberdyn
       bool
       share_a_node(const unsigned int f, const unsigned int g) const;
 
-      const model::ContactPairDefinition &definition;
-      MPI_Comm                            comm;
+      /** A copy: the pair does not depend on where it was defined. */
+      const model::ContactPairDefinition definition;
+      MPI_Comm                           comm;
       unsigned int                        my_rank;
 
       std::vector<GatheredFacet> facets;
@@ -179,6 +187,7 @@ namespace rubberdyn
       bool   trial_pending = false;
       /** Energy in the pair's springs at the last evaluation (J). */
       double energy = 0.;
+      ContactPairTimings timings;
     };
 
 
@@ -393,7 +402,11 @@ namespace rubberdyn
               pass.trial_tangential.assign(n_nodes, Tensor<1, 3>());
               pass.accepted_spring_energy.assign(n_nodes, 0.);
               pass.trial_spring_energy.assign(n_nodes, 0.);
+              pass.accepted_slip_distance.assign(n_nodes, 0.);
+              pass.trial_slip_distance.assign(n_nodes, 0.);
             }
+          pass.shown_pressure.assign(n_nodes, 0.);
+          pass.shown_gap.assign(n_nodes, 0.);
 
           // The penalty times the facet area around each node (the
           // stable step).
@@ -441,6 +454,7 @@ namespace rubberdyn
           if (std::sqrt(moved) <= 0.25 * margin)
             return;
         }
+      const auto start = std::chrono::steady_clock::now();
       const auto box_of = [&](const unsigned int f) {
         Point<3> low = x[facet_nodes[f][0]], high = low;
         for (const unsigned int node : facet_nodes[f])
@@ -477,6 +491,14 @@ namespace rubberdyn
         }
       x_at_search = x;
       searched    = true;
+      ++timings.searches;
+      timings.candidates = 0;
+      for (const Pass &pass : passes)
+        for (const auto &candidates : pass.candidates)
+          timings.candidates += candidates.size();
+      timings.search_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
     }
 
 
@@ -657,7 +679,8 @@ namespace rubberdyn
                                   VectorType                   &f,
                                   model::ContributionResults   &results)
     {
-      Implementation &I    = *impl;
+      Implementation &I     = *impl;
+      const auto      start = std::chrono::steady_clock::now();
       const bool      tied =
         I.definition.type == model::ContactPairDefinition::Type::tied;
       I.u_pair.copy_locally_owned_data_from(point.displacement);
@@ -713,6 +736,9 @@ namespace rubberdyn
                   const double       A    = pass.tied_area[node];
                   const Tensor<1, 3> mean = I.gap[node] / A;
                   I.traction[node]        = -pass.penalty * mean;
+                  pass.shown_gap[node]    = I.normal[node] * mean;
+                  pass.shown_pressure[node] =
+                    -(I.traction[node] * I.normal[node]);
                   if (pass.counted[node])
                     {
                       energy += 0.5 * pass.penalty * A * (mean * mean);
@@ -745,6 +771,11 @@ namespace rubberdyn
                   const double A   = I.area[node];
                   const double g =
                     A > 0. ? -(I.normal[node] * I.gap[node]) / A : 0.;
+                  pass.shown_gap[node]      = g;
+                  pass.shown_pressure[node] = g < 0. ? -pass.penalty * g : 0.;
+                  if (I.coulomb)
+                    pass.trial_slip_distance[node] =
+                      pass.accepted_slip_distance[node];
                   if (A > 0. && pass.counted[node])
                     statistics.max_penetration =
                       std::max(statistics.max_penetration, -g);
@@ -791,6 +822,7 @@ namespace rubberdyn
                         {
                           tangential *= limit / tangential.norm();
                           slipping = true;
+                          pass.trial_slip_distance[node] += increment.norm();
                         }
                       I.traction[node] += tangential;
                       pass.trial_tangential[node] = tangential;
@@ -863,6 +895,17 @@ namespace rubberdyn
       I.trial_dissipation = dissipation;
       I.trial_time        = point.time;
       I.trial_pending     = true;
+      I.timings.evaluation_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+
+
+    const ContactPairTimings &
+    MortarContactPair::timings() const
+    {
+      return impl->timings;
     }
 
 
@@ -878,12 +921,37 @@ namespace rubberdyn
           {
             pass.accepted_tangential[node]    = pass.trial_tangential[node];
             pass.accepted_spring_energy[node] = pass.trial_spring_energy[node];
+            pass.accepted_slip_distance[node] = pass.trial_slip_distance[node];
           }
       I.x_accepted    = I.x;
       I.time_accepted = I.trial_time;
       I.accepted_friction_work += I.trial_dissipation;
       I.trial_dissipation = 0.;
       I.trial_pending     = false;
+    }
+
+
+
+    void
+    MortarContactPair::add_surface_fields(VectorType &fields) const
+    {
+      const Implementation &I = *impl;
+      VectorType            values(I.partitioner);
+      for (const Implementation::Pass &pass : I.passes)
+        for (const unsigned int node : pass.nodes)
+          if (pass.counted[node])
+            {
+              const auto &dofs = I.node_dofs[node];
+              values.local_element(dofs[0]) += pass.shown_pressure[node];
+              values.local_element(dofs[1]) += pass.shown_gap[node];
+              if (I.coulomb)
+                values.local_element(dofs[2]) +=
+                  I.trial_pending ? pass.trial_slip_distance[node] :
+                                       pass.accepted_slip_distance[node];
+            }
+      values.compress(VectorOperation::add);
+      for (unsigned int i = 0; i < I.partitioner->locally_owned_size(); ++i)
+        fields.local_element(i) += values.local_element(i);
     }
 
 
@@ -919,6 +987,9 @@ namespace rubberdyn
           binary_io::write_doubles(out,
                                    pass.accepted_spring_energy.data(),
                                    pass.accepted_spring_energy.size());
+          binary_io::write_doubles(out,
+                                   pass.accepted_slip_distance.data(),
+                                   pass.accepted_slip_distance.size());
         }
       binary_io::write_doubles(out, &I.x_accepted[0][0], 3 * I.x.size());
       binary_io::write_doubles(out, &I.time_accepted, 1);
@@ -960,6 +1031,10 @@ namespace rubberdyn
                                   pass.accepted_spring_energy.data(),
                                   pass.accepted_spring_energy.size(),
                                   "contact pair spring energies");
+          binary_io::read_doubles(in,
+                                  pass.accepted_slip_distance.data(),
+                                  pass.accepted_slip_distance.size(),
+                                  "contact pair slip distances");
         }
       binary_io::read_doubles(in,
                               &I.x_accepted[0][0],

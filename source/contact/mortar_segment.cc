@@ -194,31 +194,26 @@ namespace rubberdyn
       if (!(area > 1e-12 * slave_area))
         return false;
 
-      PlanePoint centroid{0., 0.};
-      for (unsigned int i = 0; i < overlap.n; ++i)
-        {
-          centroid.x += overlap.vertex[i].x / overlap.n;
-          centroid.y += overlap.vertex[i].y / overlap.n;
-        }
-
       for (unsigned int a = 0; a < 4; ++a)
         for (unsigned int b = 0; b < 4; ++b)
           segment.D[a][b] = segment.M[a][b] = 0.;
       segment.area = area;
       const double tolerance = 1e-14 * std::sqrt(slave_area);
-      for (unsigned int i = 0; i < overlap.n; ++i)
+      // The convex overlap as a fan of triangles from its first vertex.
+      const PlanePoint &apex = overlap.vertex[0];
+      for (unsigned int i = 1; i + 1 < overlap.n; ++i)
         {
           const PlanePoint &p = overlap.vertex[i];
-          const PlanePoint &q = overlap.vertex[(i + 1) % overlap.n];
-          const double triangle_area = 0.5 * cross(centroid, p, q);
+          const PlanePoint &q = overlap.vertex[i + 1];
+          const double triangle_area = 0.5 * cross(apex, p, q);
           if (triangle_area <= 0.)
             continue;
           for (unsigned int g = 0; g < 7; ++g)
             {
               const PlanePoint x = {
-                rule_point[g][0] * centroid.x + rule_point[g][1] * p.x +
+                rule_point[g][0] * apex.x + rule_point[g][1] * p.x +
                   rule_point[g][2] * q.x,
-                rule_point[g][0] * centroid.y + rule_point[g][1] * p.y +
+                rule_point[g][0] * apex.y + rule_point[g][1] * p.y +
                   rule_point[g][2] * q.y};
               double xi, eta, N[4], N_master[4];
               inverse_bilinear(slave_corner, x, tolerance, xi, eta);

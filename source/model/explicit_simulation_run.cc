@@ -7,6 +7,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -411,6 +412,13 @@ namespace rubberdyn
         output.field_output_interval,
         comm);
       postprocess::FieldOutputWriter &fields = *field_writer;
+      if (!contact_pairs.empty())
+        fields.add_nodal_scalars(
+          {{"contact_pressure", "contact_gap", "contact_slip"}},
+          [this](VectorType &values) {
+            for (const auto &pair : contact_pairs)
+              pair->add_surface_fields(values);
+          });
       postprocessors.insert(postprocessors.begin(), std::move(field_writer));
       next_history     = 0.;
       next_checkpoint  = output.checkpoint_interval;

@@ -4,6 +4,9 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace rubberdyn
 {
   namespace postprocess
@@ -92,13 +95,41 @@ namespace rubberdyn
                          sum[2],
                          sum[3],
                          sum[4],
-                         maxima[2 * p],
+                         active ? maxima[2 * p] : 0.,
                          active ? minima[p] : 0.,
                          sum[5],
                          maxima[2 * p + 1],
                          sum[6],
                          sum[7],
                          sum[8]});
+        }
+    }
+
+
+
+    void
+    ContactPairColumns::summary(const SimulationView      &view,
+                                std::vector<SummaryEntry> &entries)
+    {
+      (void)view;
+      namespace MPI = dealii::Utilities::MPI;
+      const auto number = [](const double value) {
+        std::ostringstream text;
+        text << std::setprecision(9) << value;
+        return text.str();
+      };
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        {
+          const contact::ContactPairTimings &t = pairs[p]->timings();
+          entries.emplace_back(names[p] + "_searches",
+                               number(MPI::max(t.searches, comm)));
+          entries.emplace_back(
+            names[p] + "_candidates",
+            number(double(MPI::sum(t.candidates, comm))));
+          entries.emplace_back(names[p] + "_search_seconds",
+                               number(MPI::max(t.search_seconds, comm)));
+          entries.emplace_back(names[p] + "_evaluation_seconds",
+                               number(MPI::max(t.evaluation_seconds, comm)));
         }
     }
   } // namespace postprocess

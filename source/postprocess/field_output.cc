@@ -63,7 +63,8 @@ namespace rubberdyn
       const VectorType       &displacement,
       const VectorType       &velocity,
       const std::vector<std::pair<std::string, std::vector<float>>> &cell_data,
-      const double                                                   time)
+      const double                                                   time,
+      const std::vector<NodalScalars> &nodal_scalars)
     {
       const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
@@ -81,6 +82,13 @@ namespace rubberdyn
                                std::vector<std::string>(3, "velocity"),
                                DataOut<3>::type_dof_data,
                                vector_type);
+      for (const NodalScalars &scalars : nodal_scalars)
+        data_out.add_data_vector(
+          *scalars.values,
+          std::vector<std::string>(scalars.names.begin(), scalars.names.end()),
+          DataOut<3>::type_dof_data,
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+            3, DataComponentInterpretation::component_is_scalar));
 
       if (format == Format::vtu)
         {
@@ -189,6 +197,9 @@ namespace rubberdyn
       record.n_nodes     = n_global_nodes;
       record.n_cells     = n_global_cells;
       record.node_fields = {{"displacement", 3}, {"velocity", 3}};
+      for (const NodalScalars &scalars : nodal_scalars)
+        for (const std::string &name : scalars.names)
+          record.node_fields.emplace_back(name, 1);
       for (const auto &field : fields)
         record.cell_fields.push_back(field.first);
       xdmf_records.push_back(record);

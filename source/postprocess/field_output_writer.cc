@@ -129,13 +129,35 @@ namespace rubberdyn
 
 
     void
+    FieldOutputWriter::add_nodal_scalars(
+      const std::array<std::string, 3>        &names,
+      const std::function<void(VectorType &)> &fill)
+    {
+      nodal_scalar_sources.emplace_back(names, fill);
+    }
+
+
+
+    void
     FieldOutputWriter::write(const SimulationView &view)
     {
       const model::Model &model = view.model;
       const auto          cell_data =
         solid_cell_data(model, view.elements, view.solver.displacement());
+      std::vector<VectorType>                scalar_values(
+        nodal_scalar_sources.size());
+      std::vector<NodalScalars>              nodal_scalars;
+      for (unsigned int s = 0; s < nodal_scalar_sources.size(); ++s)
+        {
+          scalar_values[s].reinit(model.partitioner);
+          nodal_scalar_sources[s].second(scalar_values[s]);
+          scalar_values[s].update_ghost_values();
+          nodal_scalars.push_back(
+            {nodal_scalar_sources[s].first, &scalar_values[s]});
+        }
       fields.write(model.dof_handler, view.solver.displacement(),
-                   view.solver.velocity(), cell_data, view.solver.time());
+                   view.solver.velocity(), cell_data, view.solver.time(),
+                   nodal_scalars);
       last_output_time = view.solver.time();
 
       const auto now = minimum_jacobian(model.dof_handler,

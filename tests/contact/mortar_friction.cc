@@ -23,7 +23,12 @@
 //  5. Dissipation: in steady slip a step dissipates mu(v) N v dt (the
 //     spring's energy does not change): the friction work grows by that to
 //     relative 1e-10.
+//  6. The ParaView fields (add_surface_fields()): at every slave node the
+//     pressure eps delta, the gap -delta and the distance slipped, the sum
+//     of the slipping steps' increments (6 of 1e-3 mm and 6 of 0.5e-3 mm:
+//     9e-3 mm), relative 1e-10; zero at every other node.
 // Run on 1 and 2 ranks (the columns' values summed over the ranks).
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
@@ -212,5 +217,40 @@ main(int argc, char **argv)
             "slip follows the decay law");
       check(worst_work < 1e-10, "dissipation mu N v dt");
     }
+
+  // 6. The ParaView fields.
+  {
+    VectorType fields(model.partitioner);
+    pair.add_surface_fields(fields);
+    fields.update_ghost_values();
+    const double expected[3] = {p, -delta, 6e-3 + 6 * 0.5e-3};
+    double       worst       = 0.;
+    unsigned int n_slave     = 0;
+    for (const auto &cell : model.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int vertex : GeometryInfo<3>::vertex_indices())
+            {
+              const bool on_slave =
+                cell->material_id() == 1 &&
+                std::abs(cell->vertex(vertex)[2] - 2.) < 1e-9;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const double value =
+                    fields(cell->vertex_dof_index(vertex, d));
+                  worst = std::max(worst,
+                                   on_slave ?
+                                     std::abs(value / expected[d] - 1.) :
+                                     std::abs(value));
+                }
+              n_slave += on_slave;
+            }
+    worst = Utilities::MPI::max(worst, comm);
+    if (root)
+      out() << "6. fields at the slave nodes: pressure, gap, slip within "
+            << sci(worst) << " of " << p << " GPa, " << -delta << " mm, "
+            << expected[2] << " mm; zero elsewhere" << std::endl;
+    check(Utilities::MPI::sum(n_slave, comm) > 0 && worst < 1e-10,
+          "the ParaView fields");
+  }
   return 0;
 }

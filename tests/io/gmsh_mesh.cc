@@ -509,6 +509,51 @@ main()
     check(shared == 0, "the rigid block is a separate body");
   }
   {
+    // The meshes of the mortar contact examples: separate bodies (no
+    // shared vertex), areas by face.
+    Triangulation<3> bars;
+    read_good(bars, mesh_directory + "two_bars.msh");
+    summarize(bars,
+              "two_bars.msh",
+              {{1, 100. * 10. * 10.}, {2, 100. * 10. * 10.}},
+              {{1, 100.}, {2, 100.}, {3, 100.}, {4, 100.}, {5, 8. * 100. * 10.}});
+    Triangulation<3> block;
+    read_good(block, mesh_directory + "block_on_plate.msh");
+    summarize(block,
+              "block_on_plate.msh",
+              {{1, 10. * 10. * 5.}, {2, 20. * 20. * 2.}},
+              {{1, 100.},
+               {2, 400.},
+               {3, 100.},
+               {4, 400.},
+               {5, 4. * 10. * 5. + 4. * 20. * 2.}});
+    Triangulation<3> blocks;
+    read_good(blocks, mesh_directory + "two_blocks_on_plate.msh");
+    summarize(blocks,
+              "two_blocks_on_plate.msh",
+              {{1, 500.}, {2, 500.}, {3, 40. * 20. * 2.}},
+              {{1, 100.},
+               {2, 100.},
+               {3, 800.},
+               {4, 100.},
+               {5, 100.},
+               {6, 800.},
+               {7, 2. * 4. * 10. * 5. + 2. * (40. + 20.) * 2.}});
+    Triangulation<3> tied;
+    read_good(tied, mesh_directory + "tied_block.msh");
+    summarize(tied,
+              "tied_block.msh",
+              {{1, 20. * 20. * 10.}, {2, 20. * 20. * 2.}},
+              {{1, 400.}, {2, 400.}, {3, 4. * 20. * 12.}, {4, 400.}, {5, 400.}});
+    const unsigned int shared = n_shared_vertices(bars) +
+                                n_shared_vertices(block) +
+                                n_shared_vertices(blocks) +
+                                n_shared_vertices(tied);
+    out() << "  shared vertices between their bodies: " << shared
+          << std::endl;
+    check(shared == 0, "the contact examples' bodies have their own nodes");
+  }
+  {
     // The bolted joint: 24-gons of circumradius R (area A(R) =
     // 12 R^2 sin(pi/12), perimeter P(R) = 48 R sin(pi/24)); the bolt is
     // the shank (R = 8, z from 0 to 20), head (R = 12, 10 high) and nut

@@ -17,6 +17,10 @@
 //   patches hold floats (DataOutBase::Patch::data is a Table<2, float>),
 //   so the stored doubles are rounded to float: at most half an ulp,
 //   2^-24 |value|, plus 1e-12 for double round-off;
+// - nodal scalars (FieldOutput::NodalScalars, e.g. the contact pressure,
+//   gap and slip): three scalar fields s_x, s_y, s_z from the x, y, z dofs
+//   of one vector (here the velocity's), listed as node-centred scalars,
+//   each equal at every node to that component of the velocity;
 // - cell fields: f(c) = c_x + 10 c_y + 100 c_z of the cell centre c (plus
 //   1000 at the second time) must be stored against the cell whose vertices
 //   have that centre (the cell order of the datasets we write must match
@@ -54,6 +58,7 @@
 
 using namespace dealii;
 using rubberdyn::postprocess::FieldOutput;
+using rubberdyn::postprocess::NodalScalars;
 
 namespace
 {
@@ -238,7 +243,12 @@ main(int argc, char **argv)
         if (cell->is_locally_owned())
           f[cell->active_cell_index()] =
             cell_field_at(cell->center(), shifts[k]);
-      fields.write(dof_handler, displacement, velocity, {{"f", f}}, times[k]);
+      fields.write(dof_handler,
+                   displacement,
+                   velocity,
+                   {{"f", f}},
+                   times[k],
+                   {NodalScalars{{{"s_x", "s_y", "s_z"}}, &velocity}});
     }
   const std::vector<unsigned int> owned_cells =
     Utilities::MPI::gather(comm,
@@ -351,11 +361,15 @@ main(int argc, char **argv)
             attributes[name] = data;
           }
       for (const std::string name :
-           {"displacement", "velocity", "f", "mpi_rank"})
+           {"displacement", "velocity", "s_x", "s_y", "s_z", "f", "mpi_rank"})
         testing::check(attributes.count(name) == 1, name + " is listed");
+      for (const std::string name : {"s_x", "s_y", "s_z"})
+        testing::check(attributes[name].dims.size() == 1 ||
+                         attributes[name].dims[1] == 1,
+                       name + " has one value per node");
 
       // Largest error relative to the float rounding bound (must be <= 1).
-      double     max_u_error = 0., max_v_error = 0.;
+      double     max_u_error = 0., max_v_error = 0., max_s_error = 0.;
       const auto relative = [](const double stored, const double exact) {
         return std::abs(stored - exact) /
                (std::ldexp(std::abs(exact), -24) + 1e-12);
@@ -369,6 +383,10 @@ main(int argc, char **argv)
           const Tensor<1, 3> v = velocity_at(x, -factors[k]);
           for (unsigned int d = 0; d < 3; ++d)
             {
+              max_s_error = std::max(
+                max_s_error,
+                relative(attributes[std::string("s_") + "xyz"[d]].values[i],
+                         v[d]));
               max_u_error =
                 std::max(max_u_error,
                          relative(attributes["displacement"].values[3 * i + d],
@@ -381,6 +399,7 @@ main(int argc, char **argv)
         }
       testing::check(max_u_error <= 1., "displacement at every node");
       testing::check(max_v_error <= 1., "velocity at every node");
+      testing::check(max_s_error <= 1., "nodal scalars at every node");
 
       double f_sum = 0., max_f_error = 0.;
       for (std::size_t c = 0; c < n_cells; ++c)

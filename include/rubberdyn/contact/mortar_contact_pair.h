@@ -37,8 +37,12 @@ namespace rubberdyn
       double normal_force = 0.;
       /** Sum of the magnitudes of their tangential forces (kN). */
       double tangential_force = 0.;
-      /** Largest and smallest nodal pressure of the active nodes (GPa). */
-      double max_pressure = 0.;
+      /**
+       * Largest and smallest nodal pressure of the active nodes (GPa; a
+       * tied node's may be negative: tension). Without active nodes, the
+       * lowest and the largest double.
+       */
+      double max_pressure = std::numeric_limits<double>::lowest();
       double min_pressure = std::numeric_limits<double>::max();
       /** Sum of the active slave nodes' covered areas A_a (mm^2). */
       double contact_area = 0.;
@@ -46,6 +50,17 @@ namespace rubberdyn
       double max_penetration = 0.;
       unsigned int active_nodes   = 0;
       unsigned int slipping_nodes = 0;
+    };
+
+    /** Where a pair's time went, this rank (for benchmarks). */
+    struct ContactPairTimings
+    {
+      /** Number of searches (the first and every re-sort). */
+      unsigned int searches = 0;
+      /** Wall time of the searches and of all evaluations (s). */
+      double search_seconds = 0., evaluation_seconds = 0.;
+      /** Candidate master facets after the last search. */
+      unsigned long candidates = 0;
     };
 
     /**
@@ -166,6 +181,18 @@ namespace rubberdyn
       void
       load(std::istream &in) override;
 
+      /**
+       * Add the pair's ParaView fields at the last evaluation into
+       * @p fields (owned entries of the Q1^3 dofs, as
+       * postprocess::NodalScalars): at each slave node, into
+       * its x dof the pressure (GPa), its y dof the mean normal gap (mm,
+       * negative: penetration; 0 where no master facet is near), its z dof
+       * the distance it has slipped (mm, Coulomb pairs). A tied node's
+       * pressure is -t.n and its gap the normal separation. Collective.
+       */
+      void
+      add_surface_fields(VectorType &fields) const;
+
       /** This rank's share of the last evaluation. */
       const ContactPairStatistics &
       last_statistics() const
@@ -184,6 +211,10 @@ namespace rubberdyn
       /** The pair's penalty stiffness per area of each pass (GPa/mm). */
       double
       penalty_stiffness() const;
+
+      /** Where the time went, this rank. */
+      const ContactPairTimings &
+      timings() const;
 
       /** Number of slave facets of the first pass, all ranks. */
       unsigned int

@@ -45,7 +45,8 @@ namespace rubberdyn
      * facet's central normal onto its auxiliary plane (through the mean of
      * its corners); the projected master quadrilateral clips the slave one
      * (Sutherland-Hodgman, both convex); the overlap polygon is cut into
-     * triangles about its centroid, each integrated by the 7-point degree-5
+     * a fan of triangles from its first vertex, each integrated by the
+     * 7-point degree-5
      * rule (Dunavant 1985) at points mapped back to each facet's (xi, eta)
      * by Newton's method on the projected bilinear map. Exact for flat
      * parallelogram facets, whose products N_a N_b are quartic in the

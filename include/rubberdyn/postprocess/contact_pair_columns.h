@@ -50,6 +50,16 @@ namespace rubberdyn
       history_values(const SimulationView &view,
                      std::vector<double>  &values) override;
 
+      /**
+       * Per pair, for benchmarks: `<pair>_searches`, `<pair>_candidates`
+       * (candidate facet pairs after the last search, all ranks) and the
+       * largest over the ranks of `<pair>_search_seconds` and
+       * `<pair>_evaluation_seconds` (wall time, all evaluations). Collective.
+       */
+      void
+      summary(const SimulationView      &view,
+              std::vector<SummaryEntry> &entries) override;
+
     private:
       std::vector<const contact::MortarContactPair *> pairs;
       std::vector<std::string>                        names;

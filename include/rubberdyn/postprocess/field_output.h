@@ -6,6 +6,7 @@
 #include <rubberdyn/base/vector.h>
 
 #include <cstdint>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,19 @@ namespace rubberdyn
      * The index file is rewritten at every output, so that it is valid
      * whenever the run stops.
      */
+    /**
+     * Three scalar nodal fields in one vector of the Q1^3 dofs: the x dof
+     * of a node holds the first field's value there, the y dof the
+     * second's, the z dof the third's (e.g. the contact pressure, gap and
+     * slip of contact::MortarContactPair::add_surface_fields()).
+     */
+    struct NodalScalars
+    {
+      std::array<std::string, 3> names;
+      /** Ghosted, of the mesh's Q1^3 dofs. */
+      const VectorType *values;
+    };
+
     class FieldOutput
     {
     public:
@@ -104,9 +118,10 @@ namespace rubberdyn
                   const Format       format = Format::vtu);
 
       /**
-       * Write displacement and velocity (nodal vectors, ghosted) and the
-       * given cell data (one value per active cell, locally owned cells
-       * filled) at @p time, plus the MPI rank of every cell. Collective.
+       * Write displacement and velocity (nodal vectors, ghosted), the
+       * nodal scalars @p nodal_scalars and the given cell data (one value
+       * per active cell, locally owned cells filled) at @p time, plus the
+       * MPI rank of every cell. Collective.
        */
       void
       write(const DoFHandler<3, 3> &dof_handler,
@@ -114,7 +129,8 @@ namespace rubberdyn
             const VectorType       &velocity,
             const std::vector<std::pair<std::string, std::vector<float>>>
                         &cell_data,
-            const double time);
+            const double time,
+            const std::vector<NodalScalars> &nodal_scalars = {});
 
       /**
        * The index file that ParaView opens: `directory/basename.pvd` or

@@ -7,6 +7,8 @@
 #include <rubberdyn/postprocess/postprocessor.h>
 
 #include <limits>
+#include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -77,6 +79,15 @@ namespace rubberdyn
       void
       load(std::istream &in) override;
 
+      /**
+       * Also write three nodal scalar fields @p names, which @p fill adds
+       * into a zeroed vector of the mesh's Q1^3 dofs (owned entries;
+       * collective) at every output (postprocess::NodalScalars).
+       */
+      void
+      add_nodal_scalars(const std::array<std::string, 3>      &names,
+                        const std::function<void(VectorType &)> &fill);
+
       /** Write the current state now (collective). */
       void
       write(const SimulationView &view);
@@ -87,6 +98,10 @@ namespace rubberdyn
 
     private:
       FieldOutput fields;
+      /** The nodal scalar fields' names and how to fill them. */
+      std::vector<std::pair<std::array<std::string, 3>,
+                            std::function<void(VectorType &)>>>
+                  nodal_scalar_sources;
       double      interval;
       MPI_Comm    comm;
       double      next_output = 0.;

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# A Coulomb mortar pair survives a crash: the sliding rubber block of
+# parameter_files/block_sliding_on_plate.prm checkpointed every 1.3 ms,
+# killed (SIGKILL from inside, RUBBERDYN_SIMULATE_CRASH_AT,
+# doc/restarts.md) at 3.0 ms, while it slides, and restarted from the
+# checkpoint at 2.6 ms: time_history.csv, with the pair's forces,
+# pressures, active and slipping nodes and friction work, is byte for byte
+# the uninterrupted run's. (The pair's checkpoint holds the accepted
+# tangential tractions, spring energies and slip distances, the accepted
+# positions and time, the friction work and the last evaluation's columns;
+# the restarted run searches anew, which does not change any segment:
+# doc/theory.md, section 15.2.)
+# Usage: contact_pair_restart.sh EXECUTABLE SOURCE_DIR NPROC
+set -euo pipefail
+exe=$1; source_dir=$2; nproc=$3
+rm -rf full part ./*.prm ./*.log
+ln -sfn "$source_dir/parameter_files/meshes" meshes
+make_prm() { # name directory restart
+  sed -e "s|output/block_sliding_on_plate|$2|" \
+      -e "s|set End time *=.*|set End time = 3.5|" \
+      -e "s|^\(  set History output interval.*\)$|\1\n  set Checkpoint interval = 1.3\n  set Restart from checkpoint = $3|" \
+      -e "s|set Field output interval *=.*|set Field output interval = 0|" \
+      "$source_dir/parameter_files/block_sliding_on_plate.prm" > "$1.prm"
+}
+make_prm full full false
+make_prm part part false
+make_prm resume part true
+run() { mpirun --oversubscribe -np "$nproc" "$@"; }
+run "$exe" full.prm > full.log 2>&1
+if RUBBERDYN_SIMULATE_CRASH_AT=3.0 run -x RUBBERDYN_SIMULATE_CRASH_AT "$exe" part.prm > part.log 2>&1; then
+  echo "the run was to be killed at 3.0 ms"; cat part.log; exit 1
+fi
+run "$exe" resume.prm > resume.log 2>&1
+grep -q "Restarted from the checkpoint at t = 2.6" resume.log ||
+  { echo "no restart from 2.6 ms:"; cat resume.log; exit 1; }
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+  $c["time"] > 2.6 && $c["sliding_slipping_nodes"] > 0 { slipping = 1 }
+  END { exit !slipping }' full/time_history.csv ||
+  { echo "the block does not slide after 2.6 ms"; exit 1; }
+cmp full/time_history.csv part/time_history.csv ||
+  { echo "the restarted run differs from the uninterrupted one"; exit 1; }
+echo "killed at 3.0 ms while sliding, restarted from 2.6 ms: time_history.csv identical ($(wc -l < full/time_history.csv) lines)"
