@@ -162,6 +162,8 @@ namespace rubberdyn
 
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       VectorType u_pair, f_pair;
+      /** Local indices of the surface nodes' dofs that this rank owns. */
+      std::vector<unsigned int> owned_surface_dofs;
 
       /** Scratch by node index: covered area, weighted gap, normal,
        * traction. */
@@ -300,6 +302,11 @@ namespace rubberdyn
               partitioner->global_to_local(facets[f].dofs[c][d]);
       u_pair.reinit(partitioner);
       f_pair.reinit(partitioner);
+      for (const auto &dofs : node_dofs)
+        for (const unsigned int i : dofs)
+          if (i < partitioner->locally_owned_size())
+            owned_surface_dofs.push_back(i);
+      std::sort(owned_surface_dofs.begin(), owned_surface_dofs.end());
       const unsigned int n_nodes = node_dofs.size();
       x = node_reference;
       area.assign(n_nodes, 0.);
@@ -339,14 +346,20 @@ namespace rubberdyn
       margin = std::max(margin, definition.tie_tolerance);
       const double penalty = definition.penalty_scale *
                              std::min(mean_stiffness[0], mean_stiffness[1]);
-      const unsigned int n_passes = definition.two_pass ? 2 : 1;
+      // Self-contact (the same ids on both sides): every facet is a slave
+      // of the others already, both ways: one pass, half the penalty, as
+      // a two-pass pair.
+      const bool self_contact =
+        definition.slave_boundary_ids == definition.master_boundary_ids;
+      const unsigned int n_passes =
+        definition.two_pass && !self_contact ? 2 : 1;
       passes.resize(n_passes);
       for (unsigned int p = 0; p < n_passes; ++p)
         {
           Pass &pass         = passes[p];
           pass.slave_facets  = side_facets[p];
           pass.master_facets = side_facets[1 - p];
-          pass.penalty       = penalty / n_passes;
+          pass.penalty = penalty / (self_contact ? 2 : n_passes);
 
           // Which rank books a node: the lowest that owns a slave facet
           // around it; the gap facets: own ones and their neighbours.
@@ -666,14 +679,6 @@ namespace rubberdyn
 
 
 
-    unsigned int
-    MortarContactPair::n_slave_facets() const
-    {
-      return impl->passes.empty() ? 0 : impl->passes[0].slave_facets.size();
-    }
-
-
-
     void
     MortarContactPair::add_forces(const model::EvaluationPoint &point,
                                   VectorType                   &f,
@@ -683,7 +688,10 @@ namespace rubberdyn
       const auto      start = std::chrono::steady_clock::now();
       const bool      tied =
         I.definition.type == model::ContactPairDefinition::Type::tied;
-      I.u_pair.copy_locally_owned_data_from(point.displacement);
+      // Only the surfaces' owned dofs: they are all the pair reads here
+      // and all that other ranks import as their ghosts.
+      for (const unsigned int i : I.owned_surface_dofs)
+        I.u_pair.local_element(i) = point.displacement.local_element(i);
       I.u_pair.update_ghost_values();
       I.update_positions(I.u_pair);
       if (I.time_step < 0.)
@@ -706,7 +714,9 @@ namespace rubberdyn
       statistics         = ContactPairStatistics();
       double energy      = 0.;
       double dissipation = 0.;
-      I.f_pair           = 0.;
+      // (compress() left the ghost entries at zero.)
+      for (const unsigned int i : I.owned_surface_dofs)
+        I.f_pair.local_element(i) = 0.;
       for (Implementation::Pass &pass : I.passes)
         {
           if (tied)
@@ -884,8 +894,7 @@ namespace rubberdyn
             }
         }
       I.f_pair.compress(VectorOperation::add);
-      const unsigned int n_owned = I.partitioner->locally_owned_size();
-      for (unsigned int i = 0; i < n_owned; ++i)
+      for (const unsigned int i : I.owned_surface_dofs)
         f.local_element(i) += I.f_pair.local_element(i);
       results.contact_energy += energy;
       results.friction_dissipation += dissipation;

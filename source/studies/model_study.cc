@@ -16,6 +16,7 @@
 #include <rubberdyn/studies/model_study.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -429,7 +430,9 @@ namespace rubberdyn
             prm.declare_entry("Master boundary ids", "", Patterns::Anything(),
                               "Physical surface tags of the master faces. "
                               "The same tags as the slave's make a "
-                              "self-contact pair.");
+                              "self-contact pair (symmetric: each facet "
+                              "touches the facets it faces as slave and as "
+                              "master, with half the penalty each).");
             prm.declare_entry("Type", "frictionless",
                               Patterns::Selection("frictionless|Coulomb|tied"),
                               "'frictionless': normal contact; 'Coulomb': "
@@ -452,7 +455,8 @@ namespace rubberdyn
             prm.declare_entry("Two-pass", "false", Patterns::Bool(),
                               "Also treat the master faces as slaves of the "
                               "slave faces (symmetric; each pass with half "
-                              "the penalty).");
+                              "the penalty; a self-contact pair is "
+                              "symmetric already).");
             prm.declare_entry("Tie tolerance", "0", Patterns::Double(),
                               "Tied pairs: the largest initial normal gap "
                               "of a slave node that is tied (mm, >= 0).");
@@ -543,6 +547,20 @@ namespace rubberdyn
                                  "' needs the explicit scheme: the "
                                  "quasi-static solver has no mortar tangent "
                                  "yet");
+            std::vector<types::boundary_id> shared;
+            std::set_intersection(pair.slave_boundary_ids.begin(),
+                                  pair.slave_boundary_ids.end(),
+                                  pair.master_boundary_ids.begin(),
+                                  pair.master_boundary_ids.end(),
+                                  std::back_inserter(shared));
+            if (!shared.empty() &&
+                pair.slave_boundary_ids != pair.master_boundary_ids)
+              throw InputError(path + "/Master boundary ids",
+                               "shares the id " + std::to_string(shared[0]) +
+                                 " with the Slave boundary ids, but not all "
+                                 "its ids: a self-contact pair lists the same "
+                                 "ids on both sides, another pair none of "
+                                 "them");
             for (const Definition &other : m.contact_pairs)
               for (const types::boundary_id id : pair.slave_boundary_ids)
                 if (other.slave_boundary_ids.count(id) &&

@@ -95,12 +95,7 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
 
   model::Model model(comm);
-  io::read_gmsh_mesh(model.triangulation,
-                     fixtures::mesh_directory() + "block_on_plate.msh",
-                     "Mesh/Mesh file");
-  model.parts.push_back(fixtures::steel_part("block", 1));
-  model.parts.push_back(fixtures::steel_part("plate", 2));
-  model.setup();
+  fixtures::make_block_on_plate(model, fixtures::steel_part("block", 1));
 
   model::ContactPairDefinition definition;
   definition.name                = "sliding";

@@ -71,6 +71,23 @@ namespace fixtures
   }
 
   /**
+   * meshes/block_on_plate.msh (a block 10 x 10 x 5 mm, volume 1, standing
+   * on a plate 20 x 20 x 2 mm, volume 2, with separate nodes: the contact
+   * pairs' tests) with the part @p block on the block and the examples'
+   * steel (steel_part()) as the plate. Ends with model.setup().
+   */
+  inline void
+  make_block_on_plate(model::Model &model, model::Part block)
+  {
+    io::read_gmsh_mesh(model.triangulation,
+                       mesh_directory() + "block_on_plate.msh",
+                       "Mesh/Mesh file");
+    model.parts.push_back(std::move(block));
+    model.parts.push_back(steel_part("plate", 2));
+    model.setup();
+  }
+
+  /**
    * parameter_files/bonded_block.prm: meshes/bonded_block.msh (rubber,
    * volume 1, bonded to a steel plate, volume 2, on top), parts `rubber`
    * (Yeoh) and `steel` (Elastic, E = 210 GPa, nu = 0.3, 7.85e-6 kg/mm^3),

@@ -137,8 +137,11 @@ namespace rubberdyn
      * when a surface node has moved by a quarter of the margin since.
      *
      * Self-contact is a pair whose slave and master ids are the same: facets
-     * that share a node are not paired. `Two-pass` adds the pass with the
-     * roles swapped, each pass with half the penalty.
+     * that share a node are not paired, and since every facet is then the
+     * slave of the facets it faces and their master too, the pair acts
+     * both ways in one pass, with half the penalty. `Two-pass` adds the
+     * pass with the roles swapped, each pass with half the penalty (it
+     * changes nothing for self-contact).
      */
     class MortarContactPair : public model::ForceContribution
     {
@@ -216,9 +219,6 @@ namespace rubberdyn
       const ContactPairTimings &
       timings() const;
 
-      /** Number of slave facets of the first pass, all ranks. */
-      unsigned int
-      n_slave_facets() const;
 
     private:
       struct Implementation;
