@@ -45,7 +45,10 @@ namespace rubberdyn
         }
       };
 
-      /** Stored segment of a slave facet that this rank owns. */
+      /**
+       * A segment: its slave facet (an index into the pass's gap facets),
+       * its master facet and the integrals.
+       */
       struct StoredSegment
       {
         unsigned int  slave, master;
@@ -100,7 +103,7 @@ namespace rubberdyn
         std::vector<double> shown_pressure, shown_gap;
       };
 
-      Implementation(const model::Model                  &model,
+      Implementation(const model::Model                 &model,
                      const model::ContactPairDefinition &definition);
 
       /** Positions x = X + u of every surface node. */
@@ -126,7 +129,7 @@ namespace rubberdyn
       /** A copy: the pair does not depend on where it was defined. */
       const model::ContactPairDefinition definition;
       MPI_Comm                           comm;
-      unsigned int                        my_rank;
+      unsigned int                       my_rank;
 
       std::vector<GatheredFacet> facets;
       /** Corners' node indices of each facet. */
@@ -157,11 +160,11 @@ namespace rubberdyn
 
       std::vector<Pass> passes;
       /** Capture margin of the search (mm). */
-      double margin = 0.;
+      double margin   = 0.;
       bool   searched = false;
 
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      VectorType u_pair, f_pair;
+      VectorType                                         u_pair, f_pair;
       /** Local indices of the surface nodes' dofs that this rank owns. */
       std::vector<unsigned int> owned_surface_dofs;
 
@@ -188,14 +191,14 @@ namespace rubberdyn
       double trial_time    = 0.;
       bool   trial_pending = false;
       /** Energy in the pair's springs at the last evaluation (J). */
-      double energy = 0.;
+      double             energy = 0.;
       ContactPairTimings timings;
     };
 
 
 
     MortarContactPair::Implementation::Implementation(
-      const model::Model                  &model,
+      const model::Model                 &model,
       const model::ContactPairDefinition &definition)
       : definition(definition)
       , comm(model.comm)
@@ -205,8 +208,8 @@ namespace rubberdyn
                   ExcMessage("mortar contact pairs need the Q1 dofs"));
       // This rank's facets, then all of them, in an order that does not
       // depend on the partition (by their centres).
-      std::vector<GatheredFacet> own;
-      const FiniteElement<3> &fe = model.dof_handler.get_fe();
+      std::vector<GatheredFacet>           own;
+      const FiniteElement<3>              &fe = model.dof_handler.get_fe();
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : model.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -214,7 +217,7 @@ namespace rubberdyn
             if (cell->at_boundary(face))
               {
                 const types::boundary_id id = cell->face(face)->boundary_id();
-                const unsigned int sides =
+                const unsigned int       sides =
                   (definition.slave_boundary_ids.count(id) ? 1u : 0u) |
                   (definition.master_boundary_ids.count(id) ? 2u : 0u);
                 if (sides == 0)
@@ -246,8 +249,7 @@ namespace rubberdyn
                 const model::Part &part =
                   model.parts[model.part_of_material_id(cell->material_id())];
                 facet.stiffness = part.law->bulk_modulus() *
-                                  cell->face(face)->measure() /
-                                  cell->measure();
+                                  cell->face(face)->measure() / cell->measure();
                 facet.rank  = my_rank;
                 facet.sides = sides;
                 own.push_back(facet);
@@ -294,7 +296,9 @@ namespace rubberdyn
           }
       ghosts.compress();
       partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        model.partitioner->locally_owned_range(), ghosts, comm);
+        model.partitioner->locally_owned_range(),
+        ghosts,
+        comm);
       for (unsigned int f = 0; f < facets.size(); ++f)
         for (unsigned int c = 0; c < 4; ++c)
           for (unsigned int d = 0; d < 3; ++d)
@@ -308,13 +312,12 @@ namespace rubberdyn
             owned_surface_dofs.push_back(i);
       std::sort(owned_surface_dofs.begin(), owned_surface_dofs.end());
       const unsigned int n_nodes = node_dofs.size();
-      x = node_reference;
+      x                          = node_reference;
       area.assign(n_nodes, 0.);
       gap.assign(n_nodes, Tensor<1, 3>());
       normal.assign(n_nodes, Tensor<1, 3>());
       traction.assign(n_nodes, Tensor<1, 3>());
-      coulomb =
-        definition.type == model::ContactPairDefinition::Type::coulomb;
+      coulomb = definition.type == model::ContactPairDefinition::Type::coulomb;
       if (coulomb)
         {
           slip.assign(n_nodes, Tensor<1, 3>());
@@ -359,17 +362,19 @@ namespace rubberdyn
           Pass &pass         = passes[p];
           pass.slave_facets  = side_facets[p];
           pass.master_facets = side_facets[1 - p];
-          pass.penalty = penalty / (self_contact ? 2 : n_passes);
+          pass.penalty       = penalty / (self_contact ? 2 : n_passes);
 
           // Which rank books a node: the lowest that owns a slave facet
           // around it; the gap facets: own ones and their neighbours.
           std::vector<unsigned int> booking_rank(
-            n_nodes, std::numeric_limits<unsigned int>::max());
+            n_nodes,
+            std::numeric_limits<unsigned int>::max());
           std::vector<bool> near_own(n_nodes, false);
           for (const unsigned int f : pass.slave_facets)
             for (const unsigned int node : facet_nodes[f])
               {
-                booking_rank[node] = std::min(booking_rank[node], facets[f].rank);
+                booking_rank[node] =
+                  std::min(booking_rank[node], facets[f].rank);
                 if (facets[f].rank == my_rank)
                   near_own[node] = true;
               }
@@ -467,7 +472,7 @@ namespace rubberdyn
           if (std::sqrt(moved) <= 0.25 * margin)
             return;
         }
-      const auto start = std::chrono::steady_clock::now();
+      const auto start  = std::chrono::steady_clock::now();
       const auto box_of = [&](const unsigned int f) {
         Point<3> low = x[facet_nodes[f][0]], high = low;
         for (const unsigned int node : facet_nodes[f])
@@ -536,7 +541,7 @@ namespace rubberdyn
 
 
     void
-    MortarContactPair::Implementation::integrate(Pass &pass,
+    MortarContactPair::Implementation::integrate(Pass      &pass,
                                                  const bool keep_all)
     {
       for (const unsigned int node : pass.nodes)
@@ -549,10 +554,10 @@ namespace rubberdyn
       pass.segments.clear();
       // Segments farther apart than this are not the contact's (the back
       // of a thin part, a fold): left out whatever the search found.
-      const double reach = std::max(margin, definition.tie_tolerance);
-      FacetCorners   slave_corners, master_corners;
-      MortarSegment  segment;
-      Tensor<1, 3>   weighted[4];
+      const double  reach = std::max(margin, definition.tie_tolerance);
+      FacetCorners  slave_corners, master_corners;
+      MortarSegment segment;
+      Tensor<1, 3>  weighted[4];
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
           const auto &s = facet_nodes[pass.gap_facets[i]];
@@ -603,7 +608,7 @@ namespace rubberdyn
 
 
     MortarContactPair::MortarContactPair(
-      const model::Model                  &model,
+      const model::Model                 &model,
       const model::ContactPairDefinition &definition)
       : impl(std::make_unique<Implementation>(model, definition))
     {
@@ -731,11 +736,10 @@ namespace rubberdyn
                   const auto &mn = I.facet_nodes[s.master];
                   for (unsigned int a = 0; a < 4; ++a)
                     for (unsigned int b = 0; b < 4; ++b)
-                      I.gap[sn[a]] +=
-                        s.integrals.D[a][b] *
-                          (I.x[sn[b]] - I.node_reference[sn[b]]) -
-                        s.integrals.M[a][b] *
-                          (I.x[mn[b]] - I.node_reference[mn[b]]);
+                      I.gap[sn[a]] += s.integrals.D[a][b] *
+                                        (I.x[sn[b]] - I.node_reference[sn[b]]) -
+                                      s.integrals.M[a][b] *
+                                        (I.x[mn[b]] - I.node_reference[mn[b]]);
                 }
               I.compute_normals(pass);
               for (const unsigned int node : pass.nodes)
@@ -843,10 +847,9 @@ namespace rubberdyn
                         {
                           // The work done on the spring over the step
                           // (trapezoidal) less what it stores.
-                          dissipation += -0.5 * A * ((old + tangential) *
-                                                     increment) -
-                                         (spring -
-                                          pass.accepted_spring_energy[node]);
+                          dissipation +=
+                            -0.5 * A * ((old + tangential) * increment) -
+                            (spring - pass.accepted_spring_energy[node]);
                           energy += spring;
                         }
                     }
@@ -956,7 +959,7 @@ namespace rubberdyn
               if (I.coulomb)
                 values.local_element(dofs[2]) +=
                   I.trial_pending ? pass.trial_slip_distance[node] :
-                                       pass.accepted_slip_distance[node];
+                                    pass.accepted_slip_distance[node];
             }
       values.compress(VectorOperation::add);
       for (unsigned int i = 0; i < I.partitioner->locally_owned_size(); ++i)
@@ -1013,18 +1016,18 @@ namespace rubberdyn
       Implementation &I = *impl;
       double          shown[12];
       binary_io::read_doubles(in, shown, 12, "contact pair results");
-      statistics.force[0]        = shown[0];
-      statistics.force[1]        = shown[1];
-      statistics.force[2]        = shown[2];
-      statistics.normal_force    = shown[3];
+      statistics.force[0]         = shown[0];
+      statistics.force[1]         = shown[1];
+      statistics.force[2]         = shown[2];
+      statistics.normal_force     = shown[3];
       statistics.tangential_force = shown[4];
-      statistics.max_pressure    = shown[5];
-      statistics.min_pressure    = shown[6];
-      statistics.contact_area    = shown[7];
-      statistics.max_penetration = shown[8];
-      statistics.active_nodes    = static_cast<unsigned int>(shown[9]);
-      statistics.slipping_nodes  = static_cast<unsigned int>(shown[10]);
-      I.energy                   = shown[11];
+      statistics.max_pressure     = shown[5];
+      statistics.min_pressure     = shown[6];
+      statistics.contact_area     = shown[7];
+      statistics.max_penetration  = shown[8];
+      statistics.active_nodes     = static_cast<unsigned int>(shown[9]);
+      statistics.slipping_nodes   = static_cast<unsigned int>(shown[10]);
+      I.energy                    = shown[11];
       // The candidates are found anew from the loaded positions (the
       // segments do not depend on which extra candidates a search keeps).
       I.searched = false;

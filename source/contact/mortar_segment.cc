@@ -88,16 +88,15 @@ namespace rubberdyn
         eta = 0.;
         for (unsigned int iteration = 0; iteration < 30; ++iteration)
           {
-            double fx = -q.x, fy = -q.y, j00 = 0., j01 = 0., j10 = 0.,
-                   j11 = 0.;
+            double fx = -q.x, fy = -q.y, j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
             for (unsigned int a = 0; a < 4; ++a)
               {
-                const double N = 0.25 * (1. + corner_xi[a] * xi) *
-                                 (1. + corner_eta[a] * eta);
-                const double dxi  = 0.25 * corner_xi[a] *
-                                   (1. + corner_eta[a] * eta);
-                const double deta = 0.25 * corner_eta[a] *
-                                    (1. + corner_xi[a] * xi);
+                const double N =
+                  0.25 * (1. + corner_xi[a] * xi) * (1. + corner_eta[a] * eta);
+                const double dxi =
+                  0.25 * corner_xi[a] * (1. + corner_eta[a] * eta);
+                const double deta =
+                  0.25 * corner_eta[a] * (1. + corner_xi[a] * xi);
                 fx += N * corner[a].x;
                 fy += N * corner[a].y;
                 j00 += dxi * corner[a].x;
@@ -117,7 +116,7 @@ namespace rubberdyn
       constexpr double rule_a1 = 0.059715871789770, rule_b1 = 0.470142064105115,
                        rule_w1 = 0.132394152788506;
       constexpr double rule_a2 = 0.797426985353087, rule_b2 = 0.101286507323456,
-                       rule_w2 = 0.125939180544827;
+                       rule_w2          = 0.125939180544827;
       constexpr double rule_point[7][3] = {{1. / 3., 1. / 3., 1. / 3.},
                                            {rule_a1, rule_b1, rule_b1},
                                            {rule_b1, rule_a1, rule_b1},
@@ -125,8 +124,8 @@ namespace rubberdyn
                                            {rule_a2, rule_b2, rule_b2},
                                            {rule_b2, rule_a2, rule_b2},
                                            {rule_b2, rule_b2, rule_a2}};
-      constexpr double rule_weight[7]   = {
-        0.225, rule_w1, rule_w1, rule_w1, rule_w2, rule_w2, rule_w2};
+      constexpr double rule_weight[7] =
+        {0.225, rule_w1, rule_w1, rule_w1, rule_w2, rule_w2, rule_w2};
     } // namespace
 
 
@@ -150,14 +149,14 @@ namespace rubberdyn
       Point<3> centre;
       for (const Point<3> &x : slave)
         centre += 0.25 * x;
-      Tensor<1, 3> normal = cross_product_3d(slave[2] - slave[0],
-                                             slave[3] - slave[1]);
+      Tensor<1, 3> normal =
+        cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
       const double normal_norm = normal.norm();
       if (!(normal_norm > 0.))
         return false;
       normal /= normal_norm;
-      const Tensor<1, 3> master_normal = cross_product_3d(
-        master[2] - master[0], master[3] - master[1]);
+      const Tensor<1, 3> master_normal =
+        cross_product_3d(master[2] - master[0], master[3] - master[1]);
       if (!(master_normal * normal < 0.))
         return false;
       // In-plane axes: e1 along the first edge's projection.
@@ -169,7 +168,8 @@ namespace rubberdyn
       PlanePoint slave_corner[4], master_corner[4];
       for (unsigned int a = 0; a < 4; ++a)
         {
-          slave_corner[a]  = {(slave[a] - centre) * e1, (slave[a] - centre) * e2};
+          slave_corner[a]  = {(slave[a] - centre) * e1,
+                              (slave[a] - centre) * e2};
           master_corner[a] = {(master[a] - centre) * e1,
                               (master[a] - centre) * e2};
         }
@@ -197,25 +197,26 @@ namespace rubberdyn
       for (unsigned int a = 0; a < 4; ++a)
         for (unsigned int b = 0; b < 4; ++b)
           segment.D[a][b] = segment.M[a][b] = 0.;
-      segment.area = area;
+      segment.area           = area;
       const double tolerance = 1e-14 * std::sqrt(slave_area);
       // The convex overlap as a fan of triangles from its first vertex.
       const PlanePoint &apex = overlap.vertex[0];
       for (unsigned int i = 1; i + 1 < overlap.n; ++i)
         {
-          const PlanePoint &p = overlap.vertex[i];
-          const PlanePoint &q = overlap.vertex[i + 1];
-          const double triangle_area = 0.5 * cross(apex, p, q);
+          const PlanePoint &p             = overlap.vertex[i];
+          const PlanePoint &q             = overlap.vertex[i + 1];
+          const double      triangle_area = 0.5 * cross(apex, p, q);
           if (triangle_area <= 0.)
             continue;
           for (unsigned int g = 0; g < 7; ++g)
             {
-              const PlanePoint x = {
-                rule_point[g][0] * apex.x + rule_point[g][1] * p.x +
-                  rule_point[g][2] * q.x,
-                rule_point[g][0] * apex.y + rule_point[g][1] * p.y +
-                  rule_point[g][2] * q.y};
-              double xi, eta, N[4], N_master[4];
+              const PlanePoint x = {rule_point[g][0] * apex.x +
+                                      rule_point[g][1] * p.x +
+                                      rule_point[g][2] * q.x,
+                                    rule_point[g][0] * apex.y +
+                                      rule_point[g][1] * p.y +
+                                      rule_point[g][2] * q.y};
+              double           xi, eta, N[4], N_master[4];
               inverse_bilinear(slave_corner, x, tolerance, xi, eta);
               facet_shape_values(xi, eta, N);
               inverse_bilinear(master_corner, x, tolerance, xi, eta);

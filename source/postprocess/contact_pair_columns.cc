@@ -87,7 +87,7 @@ namespace rubberdyn
                ArrayView<double>(minima));
       for (unsigned int p = 0; p < pairs.size(); ++p)
         {
-          const double *sum = &sums[9 * p];
+          const double *sum    = &sums[9 * p];
           const bool    active = sum[6] > 0.;
           values.insert(values.end(),
                         {sum[0],
@@ -112,7 +112,7 @@ namespace rubberdyn
                                 std::vector<SummaryEntry> &entries)
     {
       (void)view;
-      namespace MPI = dealii::Utilities::MPI;
+      namespace MPI     = dealii::Utilities::MPI;
       const auto number = [](const double value) {
         std::ostringstream text;
         text << std::setprecision(9) << value;
@@ -123,9 +123,8 @@ namespace rubberdyn
           const contact::ContactPairTimings &t = pairs[p]->timings();
           entries.emplace_back(names[p] + "_searches",
                                number(MPI::max(t.searches, comm)));
-          entries.emplace_back(
-            names[p] + "_candidates",
-            number(double(MPI::sum(t.candidates, comm))));
+          entries.emplace_back(names[p] + "_candidates",
+                               number(double(MPI::sum(t.candidates, comm))));
           entries.emplace_back(names[p] + "_search_seconds",
                                number(MPI::max(t.search_seconds, comm)));
           entries.emplace_back(names[p] + "_evaluation_seconds",

@@ -36,10 +36,10 @@
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
 
+#include <cmath>
+
 #include "../model/model_fixtures.h"
 #include "../tests.h"
-
-#include <cmath>
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -79,8 +79,8 @@ namespace
       sum[f.get_partitioner()->local_to_global(i) % 3] += f.local_element(i);
     t.force_sum = 0.;
     for (double &component : sum)
-      t.force_sum = std::max(t.force_sum,
-                             std::abs(Utilities::MPI::sum(component, comm)));
+      t.force_sum =
+        std::max(t.force_sum, std::abs(Utilities::MPI::sum(component, comm)));
     return t;
   }
 } // namespace
@@ -101,10 +101,10 @@ main(int argc, char **argv)
   definition.name                = "sliding";
   definition.slave_boundary_ids  = {1};
   definition.master_boundary_ids = {2};
-  definition.type             = model::ContactPairDefinition::Type::coulomb;
-  definition.static_friction  = 0.3;
-  definition.dynamic_friction = 0.15;
-  definition.decay            = 1.;
+  definition.type                = model::ContactPairDefinition::Type::coulomb;
+  definition.static_friction     = 0.3;
+  definition.dynamic_friction    = 0.15;
+  definition.decay               = 1.;
   contact::MortarContactPair pair(model, definition);
   const double               eps = pair.penalty_stiffness();
 
@@ -150,24 +150,23 @@ main(int argc, char **argv)
   };
 
   // 1., 2. Pressed, at rest.
-  Totals t = step(0.);
+  Totals       t = step(0.);
   const double p = eps * delta, N = p * area;
-  const double patch =
-    std::max({std::abs(t.normal / N - 1.),
-              std::abs(t.max_p / p - 1.),
-              std::abs(t.min_p / p - 1.),
-              std::abs(t.force[2] / N - 1.)});
+  const double patch = std::max({std::abs(t.normal / N - 1.),
+                                 std::abs(t.max_p / p - 1.),
+                                 std::abs(t.min_p / p - 1.),
+                                 std::abs(t.force[2] / N - 1.)});
   if (root)
-    out() << "1. pressed: " << t.active << " active nodes, pressure "
-          << t.min_p << " to " << t.max_p << " GPa (eps delta = " << p
+    out() << "1. pressed: " << t.active << " active nodes, pressure " << t.min_p
+          << " to " << t.max_p << " GPa (eps delta = " << p
           << "), normal force " << t.normal << " kN, largest deviation "
-          << sci(patch) << "; sum of nodal forces " << sci(t.force_sum)
-          << " kN" << std::endl;
+          << sci(patch) << "; sum of nodal forces " << sci(t.force_sum) << " kN"
+          << std::endl;
   check(patch < 1e-11, "patch test: uniform pressure eps delta");
   check(t.force_sum < 1e-12 * N, "momentum: the forces sum to zero");
 
   // 3. Stick.
-  t = step(1e-5);
+  t                  = step(1e-5);
   const double stick = std::abs(t.tangential / (eps * 1e-5 * area) - 1.);
   if (root)
     out() << "3. stick: T = " << t.tangential << " kN (eps 1e-5 A, "
@@ -183,10 +182,10 @@ main(int argc, char **argv)
   // 4., 5. Slip at v = 1 and 0.5 mm/ms.
   for (const double speed : {1., 0.5})
     {
-      const double mu = 0.15 + 0.15 * std::exp(-speed);
+      const double mu          = 0.15 + 0.15 * std::exp(-speed);
       double       worst_ratio = 0., worst_work = 0.;
       unsigned int fewest_slipping = t.active;
-      t = step(speed * dt); // the change of speed
+      t                            = step(speed * dt); // the change of speed
       for (unsigned int s = 0; s < 5; ++s)
         {
           const double work_before = t.friction_work;
@@ -195,10 +194,10 @@ main(int argc, char **argv)
             std::max(worst_ratio, std::abs(t.tangential / t.normal / mu - 1.));
           worst_ratio =
             std::max(worst_ratio, std::abs(-t.force[0] / t.force[2] / mu - 1.));
-          worst_work = std::max(
-            worst_work,
-            std::abs((t.friction_work - work_before) / (mu * N * speed * dt) -
-                     1.));
+          worst_work      = std::max(worst_work,
+                                std::abs((t.friction_work - work_before) /
+                                           (mu * N * speed * dt) -
+                                         1.));
           fewest_slipping = std::min(fewest_slipping, t.slipping);
         }
       if (root)
@@ -224,21 +223,18 @@ main(int argc, char **argv)
     for (const auto &cell : model.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int vertex : GeometryInfo<3>::vertex_indices())
-            {
-              const bool on_slave =
-                cell->material_id() == 1 &&
-                std::abs(cell->vertex(vertex)[2] - 2.) < 1e-9;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const double value =
-                    fields(cell->vertex_dof_index(vertex, d));
-                  worst = std::max(worst,
-                                   on_slave ?
-                                     std::abs(value / expected[d] - 1.) :
-                                     std::abs(value));
-                }
-              n_slave += on_slave;
-            }
+          {
+            const bool on_slave = cell->material_id() == 1 &&
+                                  std::abs(cell->vertex(vertex)[2] - 2.) < 1e-9;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const double value = fields(cell->vertex_dof_index(vertex, d));
+                worst              = std::max(worst,
+                                 on_slave ? std::abs(value / expected[d] - 1.) :
+                                                         std::abs(value));
+              }
+            n_slave += on_slave;
+          }
     worst = Utilities::MPI::max(worst, comm);
     if (root)
       out() << "6. fields at the slave nodes: pressure, gap, slip within "

@@ -25,9 +25,9 @@
 // inverse maps converge to 1e-14 of the facet's size).
 #include <rubberdyn/contact/mortar_segment.h>
 
-#include "../tests.h"
-
 #include <cmath>
+
+#include "../tests.h"
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -66,7 +66,7 @@ int
 main()
 {
   out() << std::setprecision(10);
-  contact::MortarSegment s;
+  contact::MortarSegment      s;
   const contact::FacetCorners slave = square(0., 0., 1., 0., false);
 
   // 1. Matching facets.
@@ -79,13 +79,12 @@ main()
       for (unsigned int b = 0; b < 4; ++b)
         {
           const unsigned int distance = (a + 4 - b) % 4;
-          const double exact = distance == 0 ? 1. / 9. :
-                               distance == 2 ? 1. / 36. :
-                                               1. / 18.;
+          const double       exact    = distance == 0 ? 1. / 9. :
+                                        distance == 2 ? 1. / 36. :
+                                                        1. / 18.;
           error = std::max(error, std::abs(s.D[a][b] - exact));
           // The master's corner k sits at the slave's corner (4 - k) % 4.
-          error = std::max(error,
-                           std::abs(s.M[a][(4 - b) % 4] - exact));
+          error = std::max(error, std::abs(s.M[a][(4 - b) % 4] - exact));
         }
     out() << "1. matching: area " << s.area << ", D[0][0] " << s.D[0][0]
           << ", D[0][1] " << s.D[0][1] << ", D[0][2] " << s.D[0][2]
@@ -98,15 +97,15 @@ main()
     const contact::FacetCorners master = square(0.5, 0.25, 1., 0.1, true);
     check(contact::integrate_mortar_segment(slave, master, s),
           "shifted facets overlap");
-    const double int_x[2] = {0.125, 0.375};      // 1 - x, x over [0.5, 1]
-    const double int_y[2] = {0.28125, 0.46875};  // 1 - y, y over [0.25, 1]
+    const double       int_x[2] = {0.125, 0.375};     // 1 - x, x over [0.5, 1]
+    const double       int_y[2] = {0.28125, 0.46875}; // 1 - y, y over [0.25, 1]
     const unsigned int ix[4] = {0, 1, 1, 0}, iy[4] = {0, 0, 1, 1};
-    double error = std::abs(s.area - 0.375);
+    double             error = std::abs(s.area - 0.375);
     for (unsigned int a = 0; a < 4; ++a)
       {
         const double exact = int_x[ix[a]] * int_y[iy[a]];
-        error = std::max(error, std::abs(row_sum(s.D, a) - exact));
-        error = std::max(error, std::abs(row_sum(s.M, a) - exact));
+        error              = std::max(error, std::abs(row_sum(s.D, a) - exact));
+        error              = std::max(error, std::abs(row_sum(s.M, a) - exact));
         Tensor<1, 3> weighted;
         for (unsigned int b = 0; b < 4; ++b)
           weighted += s.D[a][b] * slave[b] - s.M[a][b] * master[b];
@@ -115,8 +114,8 @@ main()
               << " (exact " << exact << "), mean gap "
               << -weighted[2] / row_sum(s.D, a) << std::endl;
       }
-    out() << "2. shifted: area " << s.area << ", largest error "
-          << sci(error) << std::endl;
+    out() << "2. shifted: area " << s.area << ", largest error " << sci(error)
+          << std::endl;
     check(error < 1e-13, "shifted facets: overlap integrals");
   }
 
@@ -134,8 +133,8 @@ main()
         error = std::max(error, std::abs(row_sum(s.D, a) - 0.125));
         error = std::max(error, std::abs(row_sum(s.M, a) - 0.125));
       }
-    out() << "3. diamond: area " << s.area << ", largest error "
-          << sci(error) << std::endl;
+    out() << "3. diamond: area " << s.area << ", largest error " << sci(error)
+          << std::endl;
     check(error < 1e-13, "diamond: overlap integrals");
   }
 
@@ -145,7 +144,7 @@ main()
                                               Point<3>(1., 0., 0.),
                                               Point<3>(0.75, 1., 0.),
                                               Point<3>(0.25, 1., 0.)}};
-    contact::FacetCorners master = trapezoid;
+    contact::FacetCorners       master    = trapezoid;
     std::swap(master[1], master[3]);
     check(contact::integrate_mortar_segment(trapezoid, master, s),
           "trapezoids overlap");
@@ -163,12 +162,15 @@ main()
 
   // 5. No segment.
   {
-    const bool same_way = contact::integrate_mortar_segment(
-      slave, square(0., 0., 1., 0.1, false), s);
-    const bool beside = contact::integrate_mortar_segment(
-      slave, square(1.5, 0., 1., 0., true), s);
-    out() << "5. same way: " << same_way << ", beside: " << beside
-          << std::endl;
+    const bool same_way =
+      contact::integrate_mortar_segment(slave,
+                                        square(0., 0., 1., 0.1, false),
+                                        s);
+    const bool beside =
+      contact::integrate_mortar_segment(slave,
+                                        square(1.5, 0., 1., 0., true),
+                                        s);
+    out() << "5. same way: " << same_way << ", beside: " << beside << std::endl;
     check(!same_way && !beside, "no segment");
   }
   return 0;

@@ -22,12 +22,12 @@
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
 
-#include "../model/model_fixtures.h"
-#include "../tests.h"
-
 #include <cmath>
 #include <iomanip>
 #include <memory>
+
+#include "../model/model_fixtures.h"
+#include "../tests.h"
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -40,7 +40,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+  const bool         root    = Utilities::MPI::this_mpi_process(comm) == 0;
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
 
   model::Model model(comm);
@@ -70,7 +70,7 @@ main(int argc, char **argv)
       definition.name                = slave == 1 ? "left" : "right";
       definition.slave_boundary_ids  = {types::boundary_id(slave)};
       definition.master_boundary_ids = {3};
-      definition.type = model::ContactPairDefinition::Type::coulomb;
+      definition.type            = model::ContactPairDefinition::Type::coulomb;
       definition.static_friction = definition.dynamic_friction = 0.2;
       pairs.push_back(
         std::make_unique<contact::MortarContactPair>(model, definition));
@@ -94,9 +94,9 @@ main(int argc, char **argv)
             cell->material_id() != 3)
           for (const unsigned int vertex : cell->vertex_indices())
             {
-              const Point<3> &X    = cell->vertex(vertex);
-              const double    sign = cell->material_id() == 1 ? 1. : -1.;
-              const double    turn = 1e-4 * step;
+              const Point<3>    &X    = cell->vertex(vertex);
+              const double       sign = cell->material_id() == 1 ? 1. : -1.;
+              const double       turn = 1e-4 * step;
               const Tensor<1, 3> value{
                 {sign * slide - turn * (X[1] - 10.),
                  turn * (X[0] - 20.),
@@ -107,13 +107,13 @@ main(int argc, char **argv)
       const model::EvaluationPoint point{u, v, mass, bodies, 1e-3 * step};
       model::ContributionResults   results;
       results.reset(3, 0);
-      f = 0.;
+      f                 = 0.;
       double normal_sum = 0.;
       for (const auto &pair : pairs)
         {
           pair->add_forces(point, f, results);
           const contact::ContactPairStatistics &s = pair->last_statistics();
-          Tensor<1, 3>                           force;
+          Tensor<1, 3>                          force;
           for (unsigned int d = 0; d < 3; ++d)
             force[d] = Utilities::MPI::sum(s.force[d], comm);
           const double normal = Utilities::MPI::sum(s.normal_force, comm);
@@ -127,9 +127,9 @@ main(int argc, char **argv)
             Utilities::MPI::sum(s.slipping_nodes, comm);
           const double work = Utilities::MPI::sum(pair->friction_work(), comm);
           if (root)
-            out() << "step " << step << " " << pair->name() << ": N "
-                  << normal << " kN, T " << tangential << " kN, force "
-                  << force << " kN, max pressure " << 1e3 * max_p
+            out() << "step " << step << " " << pair->name() << ": N " << normal
+                  << " kN, T " << tangential << " kN, force " << force
+                  << " kN, max pressure " << 1e3 * max_p
                   << " MPa, max penetration " << 1e3 * max_g << " um, "
                   << active << " active, " << slipping
                   << " slipping, friction work " << 1e6 * work << " uJ"

@@ -21,10 +21,10 @@
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
 
+#include <cmath>
+
 #include "../model/model_fixtures.h"
 #include "../tests.h"
-
-#include <cmath>
 
 using namespace dealii;
 using namespace rubberdyn;
@@ -46,7 +46,7 @@ main(int argc, char **argv)
   definition.name                = "glue";
   definition.slave_boundary_ids  = {1};
   definition.master_boundary_ids = {2};
-  definition.type = model::ContactPairDefinition::Type::tied;
+  definition.type                = model::ContactPairDefinition::Type::tied;
   contact::MortarContactPair pair(model, definition);
   const double               eps = pair.penalty_stiffness(), area = 100.;
 
@@ -85,7 +85,8 @@ main(int argc, char **argv)
       }
     double largest_sum = 0.;
     for (const double s : sum)
-      largest_sum = std::max(largest_sum, std::abs(Utilities::MPI::sum(s, comm)));
+      largest_sum =
+        std::max(largest_sum, std::abs(Utilities::MPI::sum(s, comm)));
     return std::make_pair(Utilities::MPI::max(largest, comm), largest_sum);
   };
 
@@ -98,7 +99,7 @@ main(int argc, char **argv)
   set_displacement(linear, linear);
   const auto [largest_force, unused] = evaluate();
   (void)unused;
-  const double scale = eps * E.norm() * area;
+  const double       scale = eps * E.norm() * area;
   const unsigned int n_tied =
     Utilities::MPI::sum(pair.last_statistics().active_nodes, comm);
   if (root)
@@ -129,11 +130,11 @@ main(int argc, char **argv)
               std::abs(max_p / (-eps * w[2]) - 1.),
               std::abs(min_p / (-eps * w[2]) - 1.)});
   if (root)
-    out() << "2. translation: force on the block " << force << " kN (-eps w A = "
-          << expected << "), pressure " << min_p << " to " << max_p
-          << " GPa, largest deviation " << sci(deviation)
-          << "; sum of all nodal forces / |force| " << sci(balance / force.norm())
-          << std::endl;
+    out() << "2. translation: force on the block " << force
+          << " kN (-eps w A = " << expected << "), pressure " << min_p << " to "
+          << max_p << " GPa, largest deviation " << sci(deviation)
+          << "; sum of all nodal forces / |force| "
+          << sci(balance / force.norm()) << std::endl;
   check(deviation < 1e-11, "uniform traction -eps w");
   check(balance < 1e-12 * force.norm(), "the forces balance");
   return 0;

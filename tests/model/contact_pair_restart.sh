@@ -13,6 +13,7 @@
 # Usage: contact_pair_restart.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
+source "$source_dir/tests/model/script_helpers.sh"
 rm -rf full part ./*.prm ./*.log
 ln -sfn "$source_dir/parameter_files/meshes" meshes
 make_prm() { # name directory restart
@@ -25,14 +26,7 @@ make_prm() { # name directory restart
 make_prm full full false
 make_prm part part false
 make_prm resume part true
-run() { mpirun --oversubscribe -np "$nproc" "$@"; }
-run "$exe" full.prm > full.log 2>&1
-if RUBBERDYN_SIMULATE_CRASH_AT=3.0 run -x RUBBERDYN_SIMULATE_CRASH_AT "$exe" part.prm > part.log 2>&1; then
-  echo "the run was to be killed at 3.0 ms"; cat part.log; exit 1
-fi
-run "$exe" resume.prm > resume.log 2>&1
-grep -q "Restarted from the checkpoint at t = 2.6" resume.log ||
-  { echo "no restart from 2.6 ms:"; cat resume.log; exit 1; }
+crash_and_restart full part resume 3.0 2.6
 awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
   $c["time"] > 2.6 && $c["sliding_slipping_nodes"] > 0 { slipping = 1 }
   END { exit !slipping }' full/time_history.csv ||

@@ -9,6 +9,7 @@
 # Usage: rigid_part_restart.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
+source "$source_dir/tests/model/script_helpers.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 rm -rf full part ./*.prm ./*.log
 ln -sfn "$source_dir/parameter_files/meshes" meshes
@@ -21,14 +22,7 @@ make_prm() { # name directory restart
 make_prm full full false
 make_prm part part false
 make_prm resume part true
-run() { mpirun --oversubscribe -np "$nproc" "$@"; }
-run "$exe" full.prm > full.log 2>&1
-if RUBBERDYN_SIMULATE_CRASH_AT=3.0 run -x RUBBERDYN_SIMULATE_CRASH_AT "$exe" part.prm > part.log 2>&1; then
-  echo "the run was to be killed at 3.0 ms"; cat part.log; exit 1
-fi
-run "$exe" resume.prm > resume.log 2>&1
-grep -q "Restarted from the checkpoint at t = 2.6" resume.log ||
-  { echo "no restart from 2.6 ms:"; cat resume.log; exit 1; }
+crash_and_restart full part resume 3.0 2.6
 grep -q "block_angular_velocity_z" full/time_history.csv ||
   { echo "the rigid part's columns are missing"; exit 1; }
 cmp full/time_history.csv part/time_history.csv ||

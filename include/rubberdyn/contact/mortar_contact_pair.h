@@ -47,9 +47,9 @@ namespace rubberdyn
       /** Sum of the active slave nodes' covered areas A_a (mm^2). */
       double contact_area = 0.;
       /** Largest penetration, -g_a, of the slave nodes (mm, >= 0). */
-      double max_penetration = 0.;
-      unsigned int active_nodes   = 0;
-      unsigned int slipping_nodes = 0;
+      double       max_penetration = 0.;
+      unsigned int active_nodes    = 0;
+      unsigned int slipping_nodes  = 0;
     };
 
     /** Where a pair's time went, this rank (for benchmarks). */
@@ -153,7 +153,7 @@ namespace rubberdyn
        * @throws InputError naming `Contact pairs/<name>/Tie tolerance` if a
        *   tied pair ties no node.
        */
-      MortarContactPair(const model::Model                  &model,
+      MortarContactPair(const model::Model                 &model,
                         const model::ContactPairDefinition &definition);
 
       ~MortarContactPair() override;

@@ -4,7 +4,6 @@
 #include <rubberdyn/postprocess/postprocessor.h>
 
 #include <mpi.h>
-
 #include <string>
 #include <vector>
 
