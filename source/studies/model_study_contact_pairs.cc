@@ -1,0 +1,204 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/model/model.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
+
+#include <algorithm>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "model_study_parsing.h"
+
+namespace rubberdyn
+{
+  namespace studies
+  {
+    namespace model_study_parsing
+    {
+      void
+      declare_contact_pairs(ParameterHandler            &prm,
+                            const registry::ListedNames &names)
+      {
+        prm.enter_subsection("Contact pairs");
+        prm.declare_entry(
+          "Names",
+          "",
+          Patterns::Anything(),
+          "Names of the contact pairs between surfaces of the mesh, "
+          "separated by commas; each has a subsection of its name. A pair "
+          "is segment-to-segment mortar contact (Puso & Laursen 2004; "
+          "doc/contact.md) of the slave faces against the master faces, "
+          "explicit scheme. The time history gets <name>_normal_force, "
+          "<name>_tangential_force, <name>_force_x/_y/_z (kN, on the slave "
+          "side), <name>_max_pressure, <name>_min_pressure (GPa), "
+          "<name>_contact_area (mm^2), <name>_max_penetration (mm), "
+          "<name>_active_nodes, <name>_slipping_nodes and "
+          "<name>_friction_work (J).");
+        for (const std::string &name :
+             names_with_template(names, "Contact pairs"))
+          {
+            prm.enter_subsection(name);
+            prm.declare_entry("Slave boundary ids",
+                              "",
+                              Patterns::Anything(),
+                              "Physical surface tags of the slave faces "
+                              "(the finer or softer side, whose nodes carry "
+                              "the gaps and pressures).");
+            prm.declare_entry("Master boundary ids",
+                              "",
+                              Patterns::Anything(),
+                              "Physical surface tags of the master faces. "
+                              "The same tags as the slave's make a "
+                              "self-contact pair (symmetric: each facet "
+                              "touches the facets it faces as slave and as "
+                              "master, with half the penalty each).");
+            prm.declare_entry("Type",
+                              "frictionless",
+                              Patterns::Selection("frictionless|Coulomb|tied"),
+                              "'frictionless': normal contact; 'Coulomb': "
+                              "with Coulomb friction; 'tied': the surfaces "
+                              "are bonded where they start within the Tie "
+                              "tolerance, keeping their initial offset.");
+            prm.declare_entry("Static friction coefficient",
+                              "0",
+                              Patterns::Double(),
+                              "FS of LS-DYNA (-, >= 0): "
+                              "mu = FD + (FS - FD) exp(-DC * slip rate).");
+            prm.declare_entry("Dynamic friction coefficient",
+                              "0",
+                              Patterns::Double(),
+                              "FD (-, 0 <= FD <= FS).");
+            prm.declare_entry("Decay coefficient",
+                              "0",
+                              Patterns::Double(),
+                              "DC (ms/mm, >= 0; 0: mu = FS).");
+            prm.declare_entry("Penalty scale",
+                              "1",
+                              Patterns::Double(),
+                              "s (-, > 0): the penalty per area is s times "
+                              "the smaller of the two sides' mean bulk "
+                              "modulus over element thickness (GPa/mm).");
+            prm.declare_entry("Two-pass",
+                              "false",
+                              Patterns::Bool(),
+                              "Also treat the master faces as slaves of the "
+                              "slave faces (symmetric; each pass with half "
+                              "the penalty; a self-contact pair is "
+                              "symmetric already).");
+            prm.declare_entry("Tie tolerance",
+                              "0",
+                              Patterns::Double(),
+                              "Tied pairs: the largest initial normal gap "
+                              "of a slave node that is tied (mm, >= 0).");
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
+
+
+
+      void
+      parse_contact_pairs(ParameterHandler                  &prm,
+                          const parameters::TimeIntegration &time,
+                          const BoundaryIdCheck &require_boundary_ids,
+                          model::Model          &m)
+      {
+        using Definition = model::ContactPairDefinition;
+        prm.enter_subsection("Contact pairs");
+        for (const std::string &name : listed_names(prm))
+          {
+            const std::string path = "Contact pairs/" + name;
+            prm.enter_subsection(name);
+            Definition pair;
+            pair.name = name;
+            pair.slave_boundary_ids =
+              parse_ids<types::boundary_id>(prm.get("Slave boundary ids"),
+                                            path + "/Slave boundary ids",
+                                            numbers::internal_face_boundary_id -
+                                              1);
+            require_boundary_ids(pair.slave_boundary_ids,
+                                 path + "/Slave boundary ids");
+            pair.master_boundary_ids =
+              parse_ids<types::boundary_id>(prm.get("Master boundary ids"),
+                                            path + "/Master boundary ids",
+                                            numbers::internal_face_boundary_id -
+                                              1);
+            require_boundary_ids(pair.master_boundary_ids,
+                                 path + "/Master boundary ids");
+            const std::string type = prm.get("Type");
+            pair.type              = type == "tied" ? Definition::Type::tied :
+                                     type == "Coulomb" ? Definition::Type::coulomb :
+                                                         Definition::Type::frictionless;
+            pair.static_friction =
+              prm.get_double("Static friction coefficient");
+            pair.dynamic_friction =
+              prm.get_double("Dynamic friction coefficient");
+            pair.decay = prm.get_double("Decay coefficient");
+            if (pair.static_friction < 0.)
+              throw InputError(path + "/Static friction coefficient",
+                               "must be >= 0, not " +
+                                 prm.get("Static friction coefficient"));
+            if (pair.dynamic_friction < 0.)
+              throw InputError(path + "/Dynamic friction coefficient",
+                               "must be >= 0, not " +
+                                 prm.get("Dynamic friction coefficient"));
+            if (pair.dynamic_friction > pair.static_friction)
+              throw InputError(path + "/Dynamic friction coefficient",
+                               "FD = " +
+                                 prm.get("Dynamic friction coefficient") +
+                                 " exceeds the Static friction coefficient "
+                                 "FS = " +
+                                 prm.get("Static friction coefficient") +
+                                 ": friction decays from FS to FD");
+            if (pair.decay < 0.)
+              throw InputError(path + "/Decay coefficient",
+                               "must be >= 0, not " +
+                                 prm.get("Decay coefficient"));
+            pair.penalty_scale = prm.get_double("Penalty scale");
+            if (!(pair.penalty_scale > 0.))
+              throw InputError(path + "/Penalty scale",
+                               "must be > 0, not " + prm.get("Penalty scale"));
+            pair.two_pass      = prm.get_bool("Two-pass");
+            pair.tie_tolerance = prm.get_double("Tie tolerance");
+            if (pair.tie_tolerance < 0.)
+              throw InputError(path + "/Tie tolerance",
+                               "must be >= 0 mm, not " +
+                                 prm.get("Tie tolerance"));
+            if (time.scheme != "explicit")
+              throw InputError("Time integration/Scheme",
+                               "the contact pair '" + name +
+                                 "' needs the explicit scheme: the "
+                                 "quasi-static solver has no mortar tangent "
+                                 "yet");
+            std::vector<types::boundary_id> shared;
+            std::set_intersection(pair.slave_boundary_ids.begin(),
+                                  pair.slave_boundary_ids.end(),
+                                  pair.master_boundary_ids.begin(),
+                                  pair.master_boundary_ids.end(),
+                                  std::back_inserter(shared));
+            if (!shared.empty() &&
+                pair.slave_boundary_ids != pair.master_boundary_ids)
+              throw InputError(path + "/Master boundary ids",
+                               "shares the id " + std::to_string(shared[0]) +
+                                 " with the Slave boundary ids, but not all "
+                                 "its ids: a self-contact pair lists the same "
+                                 "ids on both sides, another pair none of "
+                                 "them");
+            for (const Definition &other : m.contact_pairs)
+              for (const types::boundary_id id : pair.slave_boundary_ids)
+                if (other.slave_boundary_ids.count(id) &&
+                    other.type != pair.type)
+                  throw InputError(path + "/Slave boundary ids",
+                                   "the surface " + std::to_string(id) +
+                                     " is also the slave of the pair '" +
+                                     other.name + "' with another Type");
+            prm.leave_subsection();
+            m.contact_pairs.push_back(pair);
+          }
+        prm.leave_subsection();
+      }
+    } // namespace model_study_parsing
+  }   // namespace studies
+} // namespace rubberdyn
