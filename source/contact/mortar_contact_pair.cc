@@ -70,11 +70,9 @@ namespace rubberdyn
         double penalty = 0.;
         /**
          * The slave facets this rank integrates (its own and those of other
-         * ranks that share a node with them), ascending, and whether it
-         * owns each.
+         * ranks that share a node with them), ascending.
          */
         std::vector<unsigned int> gap_facets;
-        std::vector<bool>         owned;
         /** Candidate master facets of each gap facet (ascending). */
         std::vector<std::vector<unsigned int>> candidates;
         /** The nodes of the gap facets (ascending), and for each its slave
@@ -121,6 +119,13 @@ namespace rubberdyn
       /** The nodal normals of @p pass's nodes at the current positions. */
       void
       compute_normals(const Pass &pass);
+
+      /** Whether this rank owns the @p i-th gap facet of @p pass. */
+      bool
+      owns(const Pass &pass, const unsigned int i) const
+      {
+        return facets[pass.gap_facets[i]].rank == my_rank;
+      }
 
       /** Whether facets f and g share a corner. */
       bool
@@ -387,10 +392,7 @@ namespace rubberdyn
               for (const unsigned int node : facet_nodes[f])
                 near = near || near_own[node];
               if (near)
-                {
-                  pass.gap_facets.push_back(f);
-                  pass.owned.push_back(facets[f].rank == my_rank);
-                }
+                pass.gap_facets.push_back(f);
             }
           // The gap facets' nodes and, for each, its slave facets.
           std::map<unsigned int, std::vector<unsigned int>> facets_of_node;
@@ -552,9 +554,6 @@ namespace rubberdyn
             slip[node] = Tensor<1, 3>();
         }
       pass.segments.clear();
-      // Segments farther apart than this are not the contact's (the back
-      // of a thin part, a fold): left out whatever the search found.
-      const double  reach = std::max(margin, definition.tie_tolerance);
       FacetCorners  slave_corners, master_corners;
       MortarSegment segment;
       Tensor<1, 3>  weighted[4];
@@ -585,7 +584,10 @@ namespace rubberdyn
                                    segment.M[a][b] * master_corners[b];
                   total += weighted[a];
                 }
-              if (std::abs(facet_normal * total) > reach * segment.area)
+              // Farther apart than the margin (which covers the tie
+              // tolerance) is not the contact's (the back of a thin part, a
+              // fold): left out whatever the search found.
+              if (std::abs(facet_normal * total) > margin * segment.area)
                 continue;
               for (unsigned int a = 0; a < 4; ++a)
                 {
@@ -599,7 +601,7 @@ namespace rubberdyn
                     slip[s[a]] +=
                       segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
                       segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]);
-              if (keep_all || pass.owned[i])
+              if (keep_all || owns(pass, i))
                 pass.segments.push_back({i, m, segment});
             }
         }
@@ -719,6 +721,17 @@ namespace rubberdyn
       statistics         = ContactPairStatistics();
       double energy      = 0.;
       double dissipation = 0.;
+      // An active node's share of the columns: pressure p, tangential
+      // traction t (GPa) on its covered area A (mm^2).
+      const auto book_active =
+        [this](const double p, const double t, const double A) {
+          statistics.normal_force += p * A;
+          statistics.tangential_force += t * A;
+          statistics.max_pressure = std::max(statistics.max_pressure, p);
+          statistics.min_pressure = std::min(statistics.min_pressure, p);
+          statistics.contact_area += A;
+          ++statistics.active_nodes;
+        };
       // (compress() left the ghost entries at zero.)
       for (const unsigned int i : I.owned_surface_dofs)
         I.f_pair.local_element(i) = 0.;
@@ -750,26 +763,19 @@ namespace rubberdyn
                   const double       A    = pass.tied_area[node];
                   const Tensor<1, 3> mean = I.gap[node] / A;
                   I.traction[node]        = -pass.penalty * mean;
-                  pass.shown_gap[node]    = I.normal[node] * mean;
-                  pass.shown_pressure[node] =
-                    -(I.traction[node] * I.normal[node]);
+                  const double p       = -(I.traction[node] * I.normal[node]);
+                  pass.shown_gap[node] = I.normal[node] * mean;
+                  pass.shown_pressure[node] = p;
                   if (pass.counted[node])
                     {
                       energy += 0.5 * pass.penalty * A * (mean * mean);
-                      const double p = -(I.traction[node] * I.normal[node]);
-                      const Tensor<1, 3> t =
-                        I.traction[node] + p * I.normal[node];
-                      statistics.normal_force += p * A;
-                      statistics.tangential_force += t.norm() * A;
-                      statistics.max_pressure =
-                        std::max(statistics.max_pressure, p);
-                      statistics.min_pressure =
-                        std::min(statistics.min_pressure, p);
-                      statistics.contact_area += A;
+                      book_active(
+                        p,
+                        (I.traction[node] + p * I.normal[node]).norm(),
+                        A);
                       statistics.max_penetration =
                         std::max(statistics.max_penetration,
-                                 I.normal[node] * mean);
-                      ++statistics.active_nodes;
+                                 pass.shown_gap[node]);
                     }
                 }
             }
@@ -856,14 +862,7 @@ namespace rubberdyn
                   if (pass.counted[node])
                     {
                       energy += 0.5 * pass.penalty * A * g * g;
-                      statistics.normal_force += p * A;
-                      statistics.tangential_force += tangential.norm() * A;
-                      statistics.max_pressure =
-                        std::max(statistics.max_pressure, p);
-                      statistics.min_pressure =
-                        std::min(statistics.min_pressure, p);
-                      statistics.contact_area += A;
-                      ++statistics.active_nodes;
+                      book_active(p, tangential.norm(), A);
                       if (slipping)
                         ++statistics.slipping_nodes;
                     }
@@ -874,7 +873,7 @@ namespace rubberdyn
           // on the master side.
           for (const StoredSegment &s : pass.segments)
             {
-              if (!pass.owned[s.slave])
+              if (!I.owns(pass, s.slave))
                 continue;
               const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
               const auto &mn = I.facet_nodes[s.master];

@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 
@@ -111,39 +112,38 @@ namespace rubberdyn
           {
             const std::string path = "Contact pairs/" + name;
             prm.enter_subsection(name);
+            // The ids of @p entry, which must name faces of the mesh.
+            const auto boundary_ids = [&](const std::string &entry) {
+              const std::set<types::boundary_id> ids =
+                parse_ids<types::boundary_id>(
+                  prm.get(entry),
+                  path + "/" + entry,
+                  numbers::internal_face_boundary_id - 1);
+              require_boundary_ids(ids, path + "/" + entry);
+              return ids;
+            };
+            // The value of @p entry, which must not be negative.
+            const auto non_negative = [&](const std::string &entry,
+                                          const std::string &unit) {
+              const double value = prm.get_double(entry);
+              if (value < 0.)
+                throw InputError(path + "/" + entry,
+                                 "must be >= 0" + unit + ", not " +
+                                   prm.get(entry));
+              return value;
+            };
             Definition pair;
-            pair.name = name;
-            pair.slave_boundary_ids =
-              parse_ids<types::boundary_id>(prm.get("Slave boundary ids"),
-                                            path + "/Slave boundary ids",
-                                            numbers::internal_face_boundary_id -
-                                              1);
-            require_boundary_ids(pair.slave_boundary_ids,
-                                 path + "/Slave boundary ids");
-            pair.master_boundary_ids =
-              parse_ids<types::boundary_id>(prm.get("Master boundary ids"),
-                                            path + "/Master boundary ids",
-                                            numbers::internal_face_boundary_id -
-                                              1);
-            require_boundary_ids(pair.master_boundary_ids,
-                                 path + "/Master boundary ids");
-            const std::string type = prm.get("Type");
-            pair.type              = type == "tied" ? Definition::Type::tied :
-                                     type == "Coulomb" ? Definition::Type::coulomb :
-                                                         Definition::Type::frictionless;
+            pair.name                = name;
+            pair.slave_boundary_ids  = boundary_ids("Slave boundary ids");
+            pair.master_boundary_ids = boundary_ids("Master boundary ids");
+            const std::string type   = prm.get("Type");
+            pair.type                = type == "tied" ? Definition::Type::tied :
+                                       type == "Coulomb" ? Definition::Type::coulomb :
+                                                           Definition::Type::frictionless;
             pair.static_friction =
-              prm.get_double("Static friction coefficient");
+              non_negative("Static friction coefficient", "");
             pair.dynamic_friction =
-              prm.get_double("Dynamic friction coefficient");
-            pair.decay = prm.get_double("Decay coefficient");
-            if (pair.static_friction < 0.)
-              throw InputError(path + "/Static friction coefficient",
-                               "must be >= 0, not " +
-                                 prm.get("Static friction coefficient"));
-            if (pair.dynamic_friction < 0.)
-              throw InputError(path + "/Dynamic friction coefficient",
-                               "must be >= 0, not " +
-                                 prm.get("Dynamic friction coefficient"));
+              non_negative("Dynamic friction coefficient", "");
             if (pair.dynamic_friction > pair.static_friction)
               throw InputError(path + "/Dynamic friction coefficient",
                                "FD = " +
@@ -152,20 +152,12 @@ namespace rubberdyn
                                  "FS = " +
                                  prm.get("Static friction coefficient") +
                                  ": friction decays from FS to FD");
-            if (pair.decay < 0.)
-              throw InputError(path + "/Decay coefficient",
-                               "must be >= 0, not " +
-                                 prm.get("Decay coefficient"));
+            pair.decay         = non_negative("Decay coefficient", "");
             pair.penalty_scale = prm.get_double("Penalty scale");
-            if (!(pair.penalty_scale > 0.))
-              throw InputError(path + "/Penalty scale",
-                               "must be > 0, not " + prm.get("Penalty scale"));
+            parameter_tools::require_positive(pair.penalty_scale,
+                                              path + "/Penalty scale");
             pair.two_pass      = prm.get_bool("Two-pass");
-            pair.tie_tolerance = prm.get_double("Tie tolerance");
-            if (pair.tie_tolerance < 0.)
-              throw InputError(path + "/Tie tolerance",
-                               "must be >= 0 mm, not " +
-                                 prm.get("Tie tolerance"));
+            pair.tie_tolerance = non_negative("Tie tolerance", " mm");
             if (time.scheme != "explicit")
               throw InputError("Time integration/Scheme",
                                "the contact pair '" + name +

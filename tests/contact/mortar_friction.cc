@@ -73,14 +73,7 @@ namespace
     t.friction_work = Utilities::MPI::sum(pair.friction_work(), comm);
     t.active        = Utilities::MPI::sum(s.active_nodes, comm);
     t.slipping      = Utilities::MPI::sum(s.slipping_nodes, comm);
-    // The largest component of the sum of all nodal forces.
-    double sum[3] = {0., 0., 0.};
-    for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
-      sum[f.get_partitioner()->local_to_global(i) % 3] += f.local_element(i);
-    t.force_sum = 0.;
-    for (double &component : sum)
-      t.force_sum =
-        std::max(t.force_sum, std::abs(Utilities::MPI::sum(component, comm)));
+    t.force_sum     = fixtures::largest_force_sum(f, comm);
     return t;
   }
 } // namespace
@@ -108,29 +101,19 @@ main(int argc, char **argv)
   contact::MortarContactPair pair(model, definition);
   const double               eps = pair.penalty_stiffness();
 
-  // Displacement of the block's nodes (dofs are x, y, z of each vertex;
-  // the dof's component is found from the cell's finite element).
   VectorType u(model.partitioner), v(model.partitioner),
     mass(model.partitioner), f(model.partitioner);
   mass = 1.;
   mass.update_ghost_values();
   const double delta = 1e-3, dt = 1e-3, area = 100.;
-  const auto   move_block = [&](const double shift) {
-    std::vector<types::global_dof_index> dofs(model.fe.n_dofs_per_cell());
-    for (const auto &cell : model.dof_handler.active_cell_iterators())
-      if ((cell->is_locally_owned() || cell->is_ghost()) &&
-          cell->material_id() == 1)
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (model.partitioner->in_local_range(dofs[i]) ||
-                model.partitioner->is_ghost_entry(dofs[i]))
-              {
-                const unsigned int c =
-                  model.fe.system_to_component_index(i).first;
-                u(dofs[i]) = c == 0 ? shift : (c == 2 ? -delta : 0.);
-              }
-        }
+  // The block moved as a rigid body: along x, and into the plate.
+  const auto move_block = [&](const double shift) {
+    fixtures::set_vertex_displacements(
+      model,
+      u,
+      [&](const types::material_id id, const Point<3> &) {
+        return id == 1 ? Tensor<1, 3>({shift, 0., -delta}) : Tensor<1, 3>();
+      });
   };
   std::vector<model::RigidBody> bodies;
   double                        time  = 0.;

@@ -89,21 +89,18 @@ main(int argc, char **argv)
       // are pressed in by 1e-3 (1 + 0.02 x + 0.01 y) mm and turned a
       // little about z.
       const double slide = 2e-3 * step;
-      for (const auto &cell : model.dof_handler.active_cell_iterators())
-        if ((cell->is_locally_owned() || cell->is_ghost()) &&
-            cell->material_id() != 3)
-          for (const unsigned int vertex : cell->vertex_indices())
-            {
-              const Point<3>    &X    = cell->vertex(vertex);
-              const double       sign = cell->material_id() == 1 ? 1. : -1.;
-              const double       turn = 1e-4 * step;
-              const Tensor<1, 3> value{
-                {sign * slide - turn * (X[1] - 10.),
-                 turn * (X[0] - 20.),
-                 -1e-3 * (1. + 0.02 * X[0] + 0.01 * X[1])}};
-              for (unsigned int d = 0; d < 3; ++d)
-                u(cell->vertex_dof_index(vertex, d)) = value[d];
-            }
+      fixtures::set_vertex_displacements(
+        model,
+        u,
+        [&](const types::material_id id, const Point<3> &X) {
+          if (id == 3)
+            return Tensor<1, 3>();
+          const double sign = id == 1 ? 1. : -1.;
+          const double turn = 1e-4 * step;
+          return Tensor<1, 3>({sign * slide - turn * (X[1] - 10.),
+                               turn * (X[0] - 20.),
+                               -1e-3 * (1. + 0.02 * X[0] + 0.01 * X[1])});
+        });
       const model::EvaluationPoint point{u, v, mass, bodies, 1e-3 * step};
       model::ContributionResults   results;
       results.reset(3, 0);
@@ -136,13 +133,8 @@ main(int argc, char **argv)
                   << std::endl;
           pair->accept_step();
         }
-      double sum[3] = {0., 0., 0.};
-      for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
-        sum[f.get_partitioner()->local_to_global(i) % 3] += f.local_element(i);
-      double largest = 0.;
-      for (const double s : sum)
-        largest = std::max(largest, std::abs(Utilities::MPI::sum(s, comm)));
-      check(largest < 1e-12 * normal_sum, "the forces sum to zero");
+      check(fixtures::largest_force_sum(f, comm) < 1e-12 * normal_sum,
+            "the forces sum to zero");
     }
   return 0;
 }

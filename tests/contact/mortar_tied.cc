@@ -60,16 +60,12 @@ main(int argc, char **argv)
   const auto set_displacement =
     [&](const std::function<Tensor<1, 3>(const Point<3> &)> &block,
         const std::function<Tensor<1, 3>(const Point<3> &)> &plate) {
-      for (const auto &cell : model.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned() || cell->is_ghost())
-          for (const unsigned int vertex : cell->vertex_indices())
-            {
-              const Tensor<1, 3> value = cell->material_id() == 1 ?
-                                           block(cell->vertex(vertex)) :
-                                           plate(cell->vertex(vertex));
-              for (unsigned int d = 0; d < 3; ++d)
-                u(cell->vertex_dof_index(vertex, d)) = value[d];
-            }
+      fixtures::set_vertex_displacements(model,
+                                         u,
+                                         [&](const types::material_id id,
+                                             const Point<3>          &X) {
+                                           return id == 1 ? block(X) : plate(X);
+                                         });
     };
   const auto evaluate = [&]() {
     const model::EvaluationPoint point{u, v, mass, bodies, 0.};
@@ -77,17 +73,11 @@ main(int argc, char **argv)
     results.reset(2, 0);
     f = 0.;
     pair.add_forces(point, f, results);
-    double largest = 0., sum[3] = {0., 0., 0.};
+    double largest = 0.;
     for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
-      {
-        largest = std::max(largest, std::abs(f.local_element(i)));
-        sum[f.get_partitioner()->local_to_global(i) % 3] += f.local_element(i);
-      }
-    double largest_sum = 0.;
-    for (const double s : sum)
-      largest_sum =
-        std::max(largest_sum, std::abs(Utilities::MPI::sum(s, comm)));
-    return std::make_pair(Utilities::MPI::max(largest, comm), largest_sum);
+      largest = std::max(largest, std::abs(f.local_element(i)));
+    return std::make_pair(Utilities::MPI::max(largest, comm),
+                          fixtures::largest_force_sum(f, comm));
   };
 
   // 1. A homogeneous deformation.

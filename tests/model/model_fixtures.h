@@ -3,6 +3,7 @@
 #ifndef rubberdyn_tests_model_model_fixtures_h
 #define rubberdyn_tests_model_model_fixtures_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
 
 #include <rubberdyn/io/gmsh_mesh.h>
@@ -10,8 +11,10 @@
 #include <rubberdyn/materials/yeoh.h>
 #include <rubberdyn/model/model.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -68,6 +71,48 @@ namespace fixtures
     part.material_ids = {id};
     part.law = std::make_unique<materials::Elastic<3>>(210., 0.3, 7.85e-6);
     return part;
+  }
+
+  /**
+   * Set @p u (the Model's Q1 dofs) at every vertex of the locally owned and
+   * ghost cells to @p displacement(material id of the cell, X) (mm), ghost
+   * entries included. Bodies that share vertices must agree there.
+   */
+  inline void
+  set_vertex_displacements(
+    const model::Model &model,
+    VectorType         &u,
+    const std::function<Tensor<1, 3>(types::material_id, const Point<3> &)>
+      &displacement)
+  {
+    for (const auto &cell : model.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const unsigned int vertex : cell->vertex_indices())
+          {
+            const Tensor<1, 3> value =
+              displacement(cell->material_id(), cell->vertex(vertex));
+            for (unsigned int d = 0; d < 3; ++d)
+              u(cell->vertex_dof_index(vertex, d)) = value[d];
+          }
+  }
+
+  /**
+   * The largest component of the sum of all nodal forces @p f (owned
+   * entries of the Model's Q1 dofs, which it numbers vertex by vertex, x,
+   * y, z: the component is the global index modulo 3), over the ranks
+   * (kN). Zero when the forces balance. Collective.
+   */
+  inline double
+  largest_force_sum(const VectorType &f, const MPI_Comm comm)
+  {
+    double sum[3] = {0., 0., 0.};
+    for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
+      sum[f.get_partitioner()->local_to_global(i) % 3] += f.local_element(i);
+    double largest = 0.;
+    for (const double component : sum)
+      largest =
+        std::max(largest, std::abs(Utilities::MPI::sum(component, comm)));
+    return largest;
   }
 
   /**
