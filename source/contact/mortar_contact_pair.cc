@@ -8,6 +8,8 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/model.h>
 
+#include "mortar_contact_pair_implementation.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,185 +22,6 @@ namespace rubberdyn
 {
   namespace contact
   {
-    namespace mortar_internal
-    {
-      /** A facet as gathered from its rank. */
-      struct GatheredFacet
-      {
-        /** Global dofs x, y, z of its corners, in FacetCorners' order. */
-        types::global_dof_index dofs[4][3];
-        /** Reference coordinates of its corners (mm). */
-        double X[4][3];
-        /** Bulk modulus of its element times area over volume (GPa/mm). */
-        double stiffness;
-        /** Rank that owns its cell. */
-        unsigned int rank;
-        /** Bit 0: on the slave surface; bit 1: on the master surface. */
-        unsigned int sides;
-
-        /** For Utilities::MPI::all_gather(). */
-        template <class Archive>
-        void
-        serialize(Archive &archive, const unsigned int)
-        {
-          archive &dofs &X &stiffness &rank &sides;
-        }
-      };
-
-      /**
-       * A segment: its slave facet (an index into the pass's gap facets),
-       * its master facet and the integrals.
-       */
-      struct StoredSegment
-      {
-        unsigned int  slave, master;
-        MortarSegment integrals;
-      };
-    } // namespace mortar_internal
-    using namespace mortar_internal;
-
-
-
-    /** Everything behind the interface (the class documentation). */
-    struct MortarContactPair::Implementation
-    {
-      /** One direction of the pair: a slave and a master surface. */
-      struct Pass
-      {
-        std::vector<unsigned int> slave_facets, master_facets;
-        /** Penalty stiffness per area (GPa/mm). */
-        double penalty = 0.;
-        /**
-         * The slave facets this rank integrates (its own and those of other
-         * ranks that share a node with them), ascending.
-         */
-        std::vector<unsigned int> gap_facets;
-        /** Candidate master facets of each gap facet (ascending). */
-        std::vector<std::vector<unsigned int>> candidates;
-        /** The nodes of the gap facets (ascending), and for each its slave
-         * facets (for the normal) in CSR form. */
-        std::vector<unsigned int> nodes, facet_start, node_facets;
-        /** Whether this rank books a node's statistics (by node index). */
-        std::vector<bool> counted;
-        /** Segments of the last evaluation (tied: of the reference). */
-        std::vector<StoredSegment> segments;
-        /** Tied: whether each node (by node index) is tied, and its
-         * covered area in the reference configuration (mm^2). */
-        std::vector<bool>   tied;
-        std::vector<double> tied_area;
-        /**
-         * Coulomb, by node index: the tangential traction (GPa) and the
-         * energy in its spring (J), of the last accepted step and of the
-         * last evaluation.
-         */
-        std::vector<Tensor<1, 3>> accepted_tangential, trial_tangential;
-        std::vector<double>       accepted_spring_energy, trial_spring_energy;
-        /** Coulomb: the distance each node has slipped (mm), accepted and
-         * trial. */
-        std::vector<double> accepted_slip_distance, trial_slip_distance;
-        /** By node index, of the last evaluation: pressure (GPa) and mean
-         * gap (mm, 0 where nothing is covered), for ParaView. */
-        std::vector<double> shown_pressure, shown_gap;
-      };
-
-      Implementation(const model::Model                 &model,
-                     const model::ContactPairDefinition &definition);
-
-      /** Positions x = X + u of every surface node. */
-      void
-      update_positions(const VectorType &u_pair);
-
-      /** Rebuild the candidate lists if a node moved far enough. */
-      void
-      search_if_needed();
-
-      /** Integrate the segments of @p pass at the current positions. */
-      void
-      integrate(Pass &pass, const bool keep_all);
-
-      /** The nodal normals of @p pass's nodes at the current positions. */
-      void
-      compute_normals(const Pass &pass);
-
-      /** Whether this rank owns the @p i-th gap facet of @p pass. */
-      bool
-      owns(const Pass &pass, const unsigned int i) const
-      {
-        return facets[pass.gap_facets[i]].rank == my_rank;
-      }
-
-      /** Whether facets f and g share a corner. */
-      bool
-      share_a_node(const unsigned int f, const unsigned int g) const;
-
-      /** A copy: the pair does not depend on where it was defined. */
-      const model::ContactPairDefinition definition;
-      MPI_Comm                           comm;
-      unsigned int                       my_rank;
-
-      std::vector<GatheredFacet> facets;
-      /** Corners' node indices of each facet. */
-      std::vector<std::array<unsigned int, 4>> facet_nodes;
-      /** Per node: local indices (pair partitioner) of x, y, z; X. */
-      std::vector<std::array<unsigned int, 3>> node_dofs;
-      std::vector<Point<3>>                    node_reference;
-      std::vector<Point<3>>                    x, x_at_search;
-      /**
-       * Per node: the sum over passes of the penalty times the whole facet
-       * area around it, its side's int N dA (kN/mm).
-       */
-      std::vector<double> node_stiffness;
-
-      /** Area of facet @p f in the reference configuration (mm^2). */
-      double
-      facet_area(const unsigned int f) const
-      {
-        const GatheredFacet &facet = facets[f];
-        Tensor<1, 3>         d1, d2;
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            d1[d] = facet.X[2][d] - facet.X[0][d];
-            d2[d] = facet.X[3][d] - facet.X[1][d];
-          }
-        return 0.5 * cross_product_3d(d1, d2).norm();
-      }
-
-      std::vector<Pass> passes;
-      /** Capture margin of the search (mm). */
-      double margin   = 0.;
-      bool   searched = false;
-
-      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-      VectorType                                         u_pair, f_pair;
-      /** Local indices of the surface nodes' dofs that this rank owns. */
-      std::vector<unsigned int> owned_surface_dofs;
-
-      /** Scratch by node index: covered area, weighted gap, normal,
-       * traction. */
-      std::vector<double>       area;
-      std::vector<Tensor<1, 3>> gap, normal, traction;
-
-      /** Stable step of the penalty (ms), once the masses are known. */
-      double time_step = -1.;
-
-      /** Coulomb: whether the pair has friction. */
-      bool coulomb = false;
-      /** Coulomb: the weighted slip increment since the accepted step
-       * (mm^3: times the covered area), by node index. */
-      std::vector<Tensor<1, 3>> slip;
-      /** Coulomb: node positions and time of the last accepted step. */
-      std::vector<Point<3>> x_accepted;
-      double                time_accepted = 0.;
-      /** Coulomb: friction work up to the accepted step, and of the last
-       * evaluation, this rank's booked nodes (J). */
-      double accepted_friction_work = 0., trial_dissipation = 0.;
-      /** Time of the last evaluation; whether it awaits accept_step(). */
-      double trial_time    = 0.;
-      bool   trial_pending = false;
-      /** Energy in the pair's springs at the last evaluation (J). */
-      double             energy = 0.;
-      ContactPairTimings timings;
-    };
 
 
 
@@ -290,6 +113,9 @@ namespace rubberdyn
             if (inserted)
               {
                 node_dofs.push_back({});
+                node_global_dofs.push_back({facets[f].dofs[c][0],
+                                            facets[f].dofs[c][1],
+                                            facets[f].dofs[c][2]});
                 node_reference.emplace_back(facets[f].X[c][0],
                                             facets[f].X[c][1],
                                             facets[f].X[c][2]);
@@ -415,6 +241,24 @@ namespace rubberdyn
                                       around.end());
               pass.facet_start.push_back(pass.node_facets.size());
             }
+          {
+            std::vector<std::vector<unsigned int>> around(pass.nodes.size());
+            for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
+              for (const unsigned int node : facet_nodes[pass.gap_facets[i]])
+                around[std::lower_bound(pass.nodes.begin(),
+                                        pass.nodes.end(),
+                                        node) -
+                       pass.nodes.begin()]
+                  .push_back(i);
+            pass.gap_start.push_back(0);
+            for (const auto &facets_around : around)
+              {
+                pass.node_gap_facets.insert(pass.node_gap_facets.end(),
+                                            facets_around.begin(),
+                                            facets_around.end());
+                pass.gap_start.push_back(pass.node_gap_facets.size());
+              }
+          }
           pass.candidates.resize(pass.gap_facets.size());
           if (coulomb)
             {
@@ -459,6 +303,19 @@ namespace rubberdyn
       for (unsigned int n = 0; n < node_dofs.size(); ++n)
         for (unsigned int d = 0; d < 3; ++d)
           x[n][d] = node_reference[n][d] + u.local_element(node_dofs[n][d]);
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::load_positions(const VectorType &u)
+    {
+      // Only the surfaces' owned dofs: they are all the pair reads and all
+      // that other ranks import as their ghosts.
+      for (const unsigned int i : owned_surface_dofs)
+        u_pair.local_element(i) = u.local_element(i);
+      u_pair.update_ghost_values();
+      update_positions(u_pair);
     }
 
 
@@ -695,13 +552,9 @@ namespace rubberdyn
       const auto      start = std::chrono::steady_clock::now();
       const bool      tied =
         I.definition.type == model::ContactPairDefinition::Type::tied;
-      // Only the surfaces' owned dofs: they are all the pair reads here
-      // and all that other ranks import as their ghosts.
-      for (const unsigned int i : I.owned_surface_dofs)
-        I.u_pair.local_element(i) = point.displacement.local_element(i);
-      I.u_pair.update_ghost_values();
-      I.update_positions(I.u_pair);
-      if (I.time_step < 0.)
+      I.load_positions(point.displacement);
+      // (The quasi-static solver has no masses: no stable step there.)
+      if (I.time_step < 0. && point.mass.linfty_norm() > 0.)
         {
           // The masses do not change during a run: the bound once.
           VectorType mass(I.partitioner);
@@ -900,8 +753,9 @@ namespace rubberdyn
         f.local_element(i) += I.f_pair.local_element(i);
       results.contact_energy += energy;
       results.friction_dissipation += dissipation;
-      results.contact_time_step =
-        std::min(results.contact_time_step, I.time_step);
+      if (I.time_step > 0.)
+        results.contact_time_step =
+          std::min(results.contact_time_step, I.time_step);
       I.energy            = energy;
       I.trial_dissipation = dissipation;
       I.trial_time        = point.time;

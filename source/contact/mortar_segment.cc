@@ -2,6 +2,8 @@
 
 #include <rubberdyn/contact/mortar_segment.h>
 
+#include "ad_number.h"
+
 #include <cmath>
 
 namespace rubberdyn
@@ -15,31 +17,38 @@ namespace rubberdyn
       constexpr double corner_eta[4] = {-1., -1., 1., 1.};
 
       /** A point of the auxiliary plane in its own coordinates. */
+      template <typename Number>
       struct PlanePoint
       {
-        double x, y;
+        Number x, y;
       };
 
       /** At most 8 vertices: a quadrilateral clipped by another. */
+      template <typename Number>
       struct Polygon
       {
-        PlanePoint   vertex[16];
-        unsigned int n = 0;
+        PlanePoint<Number> vertex[16];
+        unsigned int       n = 0;
       };
 
-      double
-      cross(const PlanePoint &a, const PlanePoint &b, const PlanePoint &c)
+      template <typename Number>
+      Number
+      cross(const PlanePoint<Number> &a,
+            const PlanePoint<Number> &b,
+            const PlanePoint<Number> &c)
       {
         return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
       }
 
-      double
-      signed_area(const Polygon &p)
+      template <typename Number>
+      Number
+      signed_area(const Polygon<Number> &p)
       {
-        double area = 0.;
+        Number area = 0.;
         for (unsigned int i = 0; i < p.n; ++i)
           {
-            const PlanePoint &a = p.vertex[i], &b = p.vertex[(i + 1) % p.n];
+            const PlanePoint<Number> &a = p.vertex[i],
+                                     &b = p.vertex[(i + 1) % p.n];
             area += a.x * b.y - b.x * a.y;
           }
         return 0.5 * area;
@@ -47,26 +56,40 @@ namespace rubberdyn
 
       /**
        * Clip @p subject by the half-plane left of the directed edge a -> b
-       * (Sutherland-Hodgman).
+       * (Sutherland-Hodgman). A vertex within 1e-10 of the edge's length
+       * of its line counts as on it: it is kept and no intersection is
+       * made next to it. Edges of the two facets that lie on one line
+       * (the common sides of stacked blocks) would otherwise cut each
+       * other at points that round-off places, harmless for the values
+       * but with derivatives of the order of one over the round-off: the
+       * tangent needs intersections only where the sides cross.
        */
+      template <typename Number>
       void
-      clip(const Polygon    &subject,
-           const PlanePoint &a,
-           const PlanePoint &b,
-           Polygon          &result)
+      clip(const Polygon<Number>    &subject,
+           const PlanePoint<Number> &a,
+           const PlanePoint<Number> &b,
+           Polygon<Number>          &result)
       {
+        const double edge_x = value_of(b.x - a.x), edge_y = value_of(b.y - a.y);
+        const double tolerance = 1e-10 * (edge_x * edge_x + edge_y * edge_y);
+        // -1 outside, 0 on the line, 1 inside.
+        const auto side = [&](const Number &d) {
+          return value_of(d) > tolerance ? 1 : value_of(d) < -tolerance ? -1 : 0;
+        };
         result.n = 0;
         for (unsigned int i = 0; i < subject.n; ++i)
           {
-            const PlanePoint &p  = subject.vertex[i];
-            const PlanePoint &q  = subject.vertex[(i + 1) % subject.n];
-            const double      dp = cross(a, b, p);
-            const double      dq = cross(a, b, q);
-            if (dp >= 0.)
+            const PlanePoint<Number> &p  = subject.vertex[i];
+            const PlanePoint<Number> &q  = subject.vertex[(i + 1) % subject.n];
+            const Number              dp = cross(a, b, p);
+            const Number              dq = cross(a, b, q);
+            const int                 sp = side(dp), sq = side(dq);
+            if (sp >= 0)
               result.vertex[result.n++] = p;
-            if ((dp >= 0.) != (dq >= 0.))
+            if (sp * sq < 0)
               {
-                const double s            = dp / (dp - dq);
+                const Number s            = dp / (dp - dq);
                 result.vertex[result.n++] = {p.x + s * (q.x - p.x),
                                              p.y + s * (q.y - p.y)};
               }
@@ -75,27 +98,33 @@ namespace rubberdyn
 
       /**
        * The (xi, eta) at which the bilinear map of the plane points
-       * @p corner reaches @p q (Newton's method from the centre).
+       * @p corner reaches @p q (Newton's method from the centre). With a
+       * Sacado number, one more iteration after the values have converged
+       * converges the derivatives too (Newton's iterates carry them
+       * along, quadratically as well).
        */
+      template <typename Number>
       void
-      inverse_bilinear(const PlanePoint (&corner)[4],
-                       const PlanePoint &q,
-                       const double      tolerance,
-                       double           &xi,
-                       double           &eta)
+      inverse_bilinear(const PlanePoint<Number> (&corner)[4],
+                       const PlanePoint<Number> &q,
+                       const double              tolerance,
+                       Number                   &xi,
+                       Number                   &eta)
       {
-        xi  = 0.;
-        eta = 0.;
+        xi                          = 0.;
+        eta                         = 0.;
+        unsigned int extra          = std::is_same<Number, double>::value ? 0 : 1;
         for (unsigned int iteration = 0; iteration < 30; ++iteration)
           {
-            double fx = -q.x, fy = -q.y, j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
+            Number fx = -q.x, fy = -q.y, j00 = 0., j01 = 0., j10 = 0.,
+                   j11 = 0.;
             for (unsigned int a = 0; a < 4; ++a)
               {
-                const double N =
+                const Number N =
                   0.25 * (1. + corner_xi[a] * xi) * (1. + corner_eta[a] * eta);
-                const double dxi =
+                const Number dxi =
                   0.25 * corner_xi[a] * (1. + corner_eta[a] * eta);
-                const double deta =
+                const Number deta =
                   0.25 * corner_eta[a] * (1. + corner_xi[a] * xi);
                 fx += N * corner[a].x;
                 fy += N * corner[a].y;
@@ -104,9 +133,13 @@ namespace rubberdyn
                 j10 += dxi * corner[a].y;
                 j11 += deta * corner[a].y;
               }
-            if (std::abs(fx) + std::abs(fy) < tolerance)
-              return;
-            const double det = j00 * j11 - j01 * j10;
+            if (std::abs(value_of(fx)) + std::abs(value_of(fy)) < tolerance)
+              {
+                if (extra == 0)
+                  return;
+                --extra;
+              }
+            const Number det = j00 * j11 - j01 * j10;
             xi -= (j11 * fx - j01 * fy) / det;
             eta -= (-j10 * fx + j00 * fy) / det;
           }
@@ -130,8 +163,9 @@ namespace rubberdyn
 
 
 
+    template <typename Number>
     void
-    facet_shape_values(const double xi, const double eta, double (&N)[4])
+    facet_shape_values(const Number &xi, const Number &eta, Number (&N)[4])
     {
       for (unsigned int a = 0; a < 4; ++a)
         N[a] = 0.25 * (1. + corner_xi[a] * xi) * (1. + corner_eta[a] * eta);
@@ -139,33 +173,35 @@ namespace rubberdyn
 
 
 
+    template <typename Number>
     bool
-    integrate_mortar_segment(const FacetCorners &slave,
-                             const FacetCorners &master,
-                             MortarSegment      &segment)
+    integrate_mortar_segment(const FacetCornersOf<Number> &slave,
+                             const FacetCornersOf<Number> &master,
+                             MortarSegmentOf<Number>      &segment)
     {
+      using Vector = Tensor<1, 3, Number>;
       // The auxiliary plane: through the slave corners' mean, normal to
       // the slave facet's diagonals' cross product.
-      Point<3> centre;
-      for (const Point<3> &x : slave)
+      Vector centre;
+      for (const Point<3, Number> &x : slave)
         centre += 0.25 * x;
-      Tensor<1, 3> normal =
+      Vector normal =
         cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
-      const double normal_norm = normal.norm();
-      if (!(normal_norm > 0.))
+      const Number normal_norm = normal.norm();
+      if (!(value_of(normal_norm) > 0.))
         return false;
       normal /= normal_norm;
-      const Tensor<1, 3> master_normal =
+      const Vector master_normal =
         cross_product_3d(master[2] - master[0], master[3] - master[1]);
-      if (!(master_normal * normal < 0.))
+      if (!(value_of(master_normal * normal) < 0.))
         return false;
       // In-plane axes: e1 along the first edge's projection.
-      Tensor<1, 3> e1 = slave[1] - slave[0];
+      Vector e1 = slave[1] - slave[0];
       e1 -= (e1 * normal) * normal;
       e1 /= e1.norm();
-      const Tensor<1, 3> e2 = cross_product_3d(normal, e1);
+      const Vector e2 = cross_product_3d(normal, e1);
 
-      PlanePoint slave_corner[4], master_corner[4];
+      PlanePoint<Number> slave_corner[4], master_corner[4];
       for (unsigned int a = 0; a < 4; ++a)
         {
           slave_corner[a]  = {(slave[a] - centre) * e1,
@@ -176,7 +212,7 @@ namespace rubberdyn
 
       // The slave quadrilateral clipped by each edge of the master one,
       // which runs clockwise in the slave's plane (it faces the other way).
-      Polygon overlap, scratch;
+      Polygon<Number> overlap, scratch;
       overlap.n = 4;
       for (unsigned int a = 0; a < 4; ++a)
         overlap.vertex[a] = slave_corner[a];
@@ -188,10 +224,10 @@ namespace rubberdyn
         }
       if (overlap.n < 3)
         return false;
-      const double slave_area =
-        0.5 * normal_norm; // area of the projected slave quadrilateral
-      const double area = signed_area(overlap);
-      if (!(area > 1e-12 * slave_area))
+      // Area of the projected slave quadrilateral.
+      const double slave_area = 0.5 * value_of(normal_norm);
+      const Number area       = signed_area(overlap);
+      if (!(value_of(area) > 1e-12 * slave_area))
         return false;
 
       for (unsigned int a = 0; a < 4; ++a)
@@ -200,28 +236,28 @@ namespace rubberdyn
       segment.area           = area;
       const double tolerance = 1e-14 * std::sqrt(slave_area);
       // The convex overlap as a fan of triangles from its first vertex.
-      const PlanePoint &apex = overlap.vertex[0];
+      const PlanePoint<Number> &apex = overlap.vertex[0];
       for (unsigned int i = 1; i + 1 < overlap.n; ++i)
         {
-          const PlanePoint &p             = overlap.vertex[i];
-          const PlanePoint &q             = overlap.vertex[i + 1];
-          const double      triangle_area = 0.5 * cross(apex, p, q);
-          if (triangle_area <= 0.)
+          const PlanePoint<Number> &p             = overlap.vertex[i];
+          const PlanePoint<Number> &q             = overlap.vertex[i + 1];
+          const Number              triangle_area = 0.5 * cross(apex, p, q);
+          if (value_of(triangle_area) <= 0.)
             continue;
           for (unsigned int g = 0; g < 7; ++g)
             {
-              const PlanePoint x = {rule_point[g][0] * apex.x +
+              const PlanePoint<Number> x = {rule_point[g][0] * apex.x +
                                       rule_point[g][1] * p.x +
                                       rule_point[g][2] * q.x,
                                     rule_point[g][0] * apex.y +
                                       rule_point[g][1] * p.y +
                                       rule_point[g][2] * q.y};
-              double           xi, eta, N[4], N_master[4];
+              Number xi, eta, N[4], N_master[4];
               inverse_bilinear(slave_corner, x, tolerance, xi, eta);
               facet_shape_values(xi, eta, N);
               inverse_bilinear(master_corner, x, tolerance, xi, eta);
               facet_shape_values(xi, eta, N_master);
-              const double w = triangle_area * rule_weight[g];
+              const Number w = triangle_area * rule_weight[g];
               for (unsigned int a = 0; a < 4; ++a)
                 for (unsigned int b = 0; b < 4; ++b)
                   {
@@ -232,5 +268,18 @@ namespace rubberdyn
         }
       return true;
     }
+
+
+
+    template void
+    facet_shape_values(const double &, const double &, double (&)[4]);
+    template bool
+    integrate_mortar_segment(const FacetCornersOf<double> &,
+                             const FacetCornersOf<double> &,
+                             MortarSegmentOf<double> &);
+    template bool
+    integrate_mortar_segment(const FacetCornersOf<ADNumber> &,
+                             const FacetCornersOf<ADNumber> &,
+                             MortarSegmentOf<ADNumber> &);
   } // namespace contact
 } // namespace rubberdyn

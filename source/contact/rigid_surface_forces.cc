@@ -94,8 +94,10 @@ namespace rubberdyn
     RigidSurfaceForces::add_tangents(const model::EvaluationPoint &point,
                                      const TangentBlock           &add) const
     {
-      std::vector<unsigned int> dofs(3);
-      std::vector<double>       K(9);
+      const Utilities::MPI::Partitioner &partitioner =
+        *point.displacement.get_partitioner();
+      std::vector<types::global_dof_index> dofs(3);
+      std::vector<double>                  K(9);
       contact.add_tangents(point.displacement,
                            poses(point.bodies),
                            [&](const unsigned int (&node_dofs)[3],
@@ -103,7 +105,8 @@ namespace rubberdyn
                                const Tensor<2, 3> &node_K) {
                              for (unsigned int i = 0; i < 3; ++i)
                                {
-                                 dofs[i] = node_dofs[i];
+                                 dofs[i] =
+                                   partitioner.local_to_global(node_dofs[i]);
                                  for (unsigned int j = 0; j < 3; ++j)
                                    K[3 * i + j] = node_K[i][j];
                                }

@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/mixed_up_elements.h>
@@ -13,6 +14,7 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/field_output.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
+#include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -228,6 +230,13 @@ namespace rubberdyn
                                         contact_forces);
       for (const auto &forces : contact_forces)
         contributions.push_back(forces.get());
+      // Mortar contact between the mesh's surfaces, one per pair.
+      for (const ContactPairDefinition &pair : model.contact_pairs)
+        {
+          contact_pairs.push_back(
+            std::make_unique<contact::MortarContactPair>(model, pair));
+          contributions.push_back(contact_pairs.back().get());
+        }
       history_nodes =
         std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
                                                     model.partitioner,
@@ -488,6 +497,21 @@ namespace rubberdyn
         for (const std::string quantity : {"_position", "_rotation"})
           for (unsigned int d = 0; d < 3; ++d)
             columns.push_back(model.parts[p].name + quantity + xyz[d]);
+      std::unique_ptr<postprocess::ContactPairColumns> pair_columns;
+      if (!contact_pairs.empty())
+        {
+          std::vector<std::string>                        names;
+          std::vector<const contact::MortarContactPair *> pairs;
+          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+            {
+              names.push_back(model.contact_pairs[p].name);
+              pairs.push_back(contact_pairs[p].get());
+            }
+          pair_columns = std::make_unique<postprocess::ContactPairColumns>(
+            pairs, names, model.comm);
+          for (const std::string &column : pair_columns->history_columns())
+            columns.push_back(column);
+        }
       for (const std::string &column : history_nodes->columns())
         columns.push_back(column);
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
@@ -588,6 +612,9 @@ namespace rubberdyn
             for (unsigned int d = 0; d < 3; ++d)
               values.push_back(rotation[d]);
           }
+        // The pairs at the converged state (their last evaluation).
+        if (pair_columns)
+          pair_columns->append_values(values);
         history_nodes->append_values(s.displacement(), values);
         const std::string row = history.write_row(values);
         if (root && output.echo_history)
@@ -610,13 +637,28 @@ namespace rubberdyn
         if (s.time() == last_field)
           return;
         VectorType no_velocity(model.partitioner);
+        // The pairs' pressure, gap and slip (their last evaluation: the
+        // converged state).
+        VectorType                             pair_fields;
+        std::vector<postprocess::NodalScalars> nodal_scalars;
+        if (!contact_pairs.empty())
+          {
+            pair_fields.reinit(model.partitioner);
+            for (const auto &pair : contact_pairs)
+              pair->add_surface_fields(pair_fields);
+            pair_fields.update_ghost_values();
+            nodal_scalars.push_back(
+              {{{"contact_pressure", "contact_gap", "contact_slip"}},
+               &pair_fields});
+          }
         fields->write(model.dof_handler,
                       s.displacement(),
                       no_velocity,
                       postprocess::solid_cell_data(model,
                                                    *elements,
                                                    s.displacement()),
-                      s.time());
+                      s.time(),
+                      nodal_scalars);
         last_field = s.time();
         if (output.field_output_interval > 0.)
           next_field =

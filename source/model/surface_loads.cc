@@ -468,8 +468,10 @@ namespace rubberdyn
         m[2][1] = v[0];
         return m;
       };
-      std::vector<unsigned int>   dofs(12);
-      std::vector<double>         K(144);
+      const Utilities::MPI::Partitioner &partitioner =
+        *point.displacement.get_partitioner();
+      std::vector<types::global_dof_index> dofs(12);
+      std::vector<double>                  K(144);
       std::array<Tensor<1, 3>, 4> x;
       for (const Load &load : loads)
         {
@@ -486,7 +488,8 @@ namespace rubberdyn
                   const unsigned int n = load.face_nodes[f][a];
                   for (unsigned int d = 0; d < 3; ++d)
                     {
-                      dofs[3 * a + d] = load.node_dofs[n][d];
+                      dofs[3 * a + d] =
+                        partitioner.local_to_global(load.node_dofs[n][d]);
                       x[a][d] =
                         load.node_position[n][d] +
                         point.displacement.local_element(load.node_dofs[n][d]);

@@ -58,6 +58,14 @@ namespace rubberdyn
                                        std::vector<double>  &values)
     {
       (void)view;
+      append_values(values);
+    }
+
+
+
+    void
+    ContactPairColumns::append_values(std::vector<double> &values) const
+    {
       using dealii::ArrayView;
       namespace MPI = dealii::Utilities::MPI;
       // Sums, maxima and minima of all pairs in one reduction each.

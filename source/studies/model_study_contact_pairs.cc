@@ -158,12 +158,16 @@ namespace rubberdyn
                                               path + "/Penalty scale");
             pair.two_pass      = prm.get_bool("Two-pass");
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
-            if (time.scheme != "explicit")
+            // (The friction state of a Coulomb pair does not pass from
+            // the load path to the explicit run yet.)
+            if (time.scheme == "quasi-static then explicit" &&
+                pair.type == model::ContactPairDefinition::Type::coulomb)
               throw InputError("Time integration/Scheme",
-                               "the contact pair '" + name +
-                                 "' needs the explicit scheme: the "
-                                 "quasi-static solver has no mortar tangent "
-                                 "yet");
+                               "the Coulomb contact pair '" + name +
+                                 "' cannot hand its friction state from the "
+                                 "quasi-static load path to the explicit run "
+                                 "yet: run 'quasi-static' or 'explicit', or "
+                                 "make the pair frictionless or tied");
             std::vector<types::boundary_id> shared;
             std::set_intersection(pair.slave_boundary_ids.begin(),
                                   pair.slave_boundary_ids.end(),

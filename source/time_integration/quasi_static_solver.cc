@@ -206,11 +206,31 @@ namespace rubberdyn
       MPI_Comm                                comm;
       bool                                    use_direct;
 
+      /**
+       * (Re)build the sparsity pattern and the matrix: the elements'
+       * couplings and those the loads announce (add_couplings()), on the
+       * owned dofs and every dof those reach (coupled_rows).
+       */
+      void
+      build_pattern();
+
       /** Whether each local (owned and ghost) dof is constrained. */
       std::vector<bool> constrained;
       IndexSet          owned, relevant;
-      /** The constrained dofs (homogeneous, the pattern of both). */
-      AffineConstraints<double>      homogeneous;
+      /**
+       * The relevant dofs and those the loads' couplings reach beyond them
+       * (a contact pair's master facet on a third rank), with a partitioner
+       * that ghosts them all: the constraints of an assembly live there.
+       */
+      IndexSet                                           coupled_rows;
+      std::shared_ptr<const Utilities::MPI::Partitioner> coupled_partitioner;
+      /** Whether each of coupled_partitioner's local dofs is constrained,
+       * or a rigid part's node. */
+      std::vector<bool> coupled_constrained, coupled_part_node;
+      /** The prescribed increments on coupled_partitioner (predictor). */
+      VectorType coupled_increment;
+      /** The loads' couplings_version() when the pattern was built. */
+      std::vector<unsigned int> pattern_versions;
       TrilinosWrappers::SparseMatrix matrix;
       TrilinosWrappers::MPI::Vector  rhs, solution;
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
@@ -319,14 +339,8 @@ namespace rubberdyn
       const unsigned int n_local =
         partitioner->locally_owned_size() + partitioner->n_ghost_indices();
       constrained.assign(n_local, false);
-      homogeneous.reinit(relevant);
       for (unsigned int i = 0; i < n_local; ++i)
-        if (flag.local_element(i) != 0.)
-          {
-            constrained[i] = true;
-            homogeneous.add_line(partitioner->local_to_global(i));
-          }
-      homogeneous.close();
+        constrained[i] = flag.local_element(i) != 0.;
 
       if (!rigid_parts.empty())
         {
@@ -346,10 +360,7 @@ namespace rubberdyn
             }
         }
 
-      DynamicSparsityPattern dsp(relevant);
-      DoFTools::make_sparsity_pattern(dof_handler, dsp, homogeneous, false);
-      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
-      matrix.reinit(owned, owned, dsp, comm);
+      build_pattern();
       rhs.reinit(owned, comm);
       solution.reinit(owned, comm);
 
@@ -404,6 +415,91 @@ namespace rubberdyn
                 }
             }
         }
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::build_pattern()
+    {
+      std::vector<std::vector<types::global_dof_index>> blocks;
+      pattern_versions.clear();
+      for (const model::ForceContribution *load : loads)
+        {
+          load->add_couplings(
+            [&](const std::vector<types::global_dof_index> &dofs) {
+              blocks.push_back(dofs);
+            });
+          pattern_versions.push_back(load->couplings_version());
+        }
+      IndexSet ghosts = partitioner->ghost_indices();
+      {
+        std::vector<types::global_dof_index> reached;
+        for (const auto &dofs : blocks)
+          reached.insert(reached.end(), dofs.begin(), dofs.end());
+        std::sort(reached.begin(), reached.end());
+        reached.erase(std::unique(reached.begin(), reached.end()),
+                      reached.end());
+        IndexSet beyond(dof_handler.n_dofs());
+        beyond.add_indices(reached.begin(), reached.end());
+        beyond.subtract_set(owned);
+        ghosts.add_indices(beyond);
+      }
+      coupled_partitioner =
+        std::make_shared<Utilities::MPI::Partitioner>(owned, ghosts, comm);
+      coupled_rows = owned;
+      coupled_rows.add_indices(ghosts);
+      // Which of them are constrained, or a rigid part's node: from their
+      // owners.
+      VectorType flag(coupled_partitioner), part_flag(coupled_partitioner);
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          flag.local_element(i)      = constrained[i] ? 1. : 0.;
+          part_flag.local_element(i) = parts && parts->contains(i) ? 1. : 0.;
+        }
+      flag.update_ghost_values();
+      part_flag.update_ghost_values();
+      const unsigned int n_coupled =
+        n_owned + coupled_partitioner->n_ghost_indices();
+      coupled_constrained.assign(n_coupled, false);
+      coupled_part_node.assign(n_coupled, false);
+      AffineConstraints<double> pattern_constraints(coupled_rows);
+      for (unsigned int i = 0; i < n_coupled; ++i)
+        {
+          coupled_part_node[i] = part_flag.local_element(i) != 0.;
+          if (flag.local_element(i) != 0.)
+            {
+              coupled_constrained[i] = true;
+              pattern_constraints.add_line(
+                coupled_partitioner->local_to_global(i));
+            }
+        }
+      pattern_constraints.close();
+      coupled_increment.reinit(coupled_partitioner);
+
+      DynamicSparsityPattern dsp(coupled_rows);
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      pattern_constraints,
+                                      false);
+      // (A constrained dof keeps its diagonal: the constraints put a
+      // value there, also in a row of another rank.)
+      for (const auto &dofs : blocks)
+        for (const types::global_dof_index i : dofs)
+          if (!pattern_constraints.is_constrained(i))
+            {
+              for (const types::global_dof_index j : dofs)
+                if (!pattern_constraints.is_constrained(j))
+                  dsp.add(i, j);
+            }
+          else
+            dsp.add(i, i);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned,
+                                                 comm,
+                                                 coupled_rows);
+      matrix.reinit(owned, owned, dsp, comm);
     }
 
 
@@ -614,6 +710,15 @@ namespace rubberdyn
       const VectorType                    &increment,
       const bool                           predictor)
     {
+      // A contact search found new candidates: a new pattern first.
+      {
+        bool changed = false;
+        for (unsigned int l = 0; l < loads.size(); ++l)
+          changed =
+            changed || loads[l]->couplings_version() != pattern_versions[l];
+        if (Utilities::MPI::logical_or(changed, comm))
+          build_pattern();
+      }
       matrix = 0.;
       rhs    = 0.;
       // The rigid parts' borders, block by block below (before the
@@ -630,16 +735,23 @@ namespace rubberdyn
         }
       // The constraints of this assembly: the prescribed increments as
       // inhomogeneities in the predictor, none after.
-      AffineConstraints<double> step_constraints(relevant);
-      for (unsigned int i = 0; i < constrained.size(); ++i)
-        if (constrained[i])
+      // (On every dof the loads' couplings reach: the increments from
+      // their owners.)
+      if (predictor)
+        {
+          coupled_increment.copy_locally_owned_data_from(increment);
+          coupled_increment.update_ghost_values();
+        }
+      AffineConstraints<double> step_constraints(coupled_rows);
+      for (unsigned int i = 0; i < coupled_constrained.size(); ++i)
+        if (coupled_constrained[i])
           {
             const types::global_dof_index global =
-              partitioner->local_to_global(i);
+              coupled_partitioner->local_to_global(i);
             step_constraints.add_line(global);
             if (predictor)
-              step_constraints.set_inhomogeneity(global,
-                                                 increment.local_element(i));
+              step_constraints.set_inhomogeneity(
+                global, coupled_increment.local_element(i));
           }
       step_constraints.close();
 
@@ -671,27 +783,54 @@ namespace rubberdyn
       const model::EvaluationPoint         point{u, zero, zero, bodies, t};
       FullMatrix<double>                   block_matrix;
       Vector<double>                       block_rhs;
-      std::vector<types::global_dof_index> block_global;
+      std::vector<unsigned int>            block_local;
       for (const model::ForceContribution *load : loads)
         load->add_tangents(
           point,
-          [&](const std::vector<unsigned int> &dofs,
-              const std::vector<double>       &K) {
+          [&](const std::vector<types::global_dof_index> &dofs,
+              const std::vector<double>                  &K) {
             const unsigned int n = dofs.size();
             block_matrix.reinit(n, n);
             block_rhs.reinit(n);
-            block_global.resize(n);
             for (unsigned int i = 0; i < n; ++i)
-              {
-                block_global[i] = partitioner->local_to_global(dofs[i]);
-                for (unsigned int j = 0; j < n; ++j)
-                  block_matrix(i, j) = K[n * i + j];
-              }
+              for (unsigned int j = 0; j < n; ++j)
+                block_matrix(i, j) = K[n * i + j];
             if (parts)
-              parts->add_block(dofs.data(), n, K.data(), part_column, part_row);
+              {
+                // The parts' borders need the block on this rank's
+                // vectors: a block that reaches beyond them may not
+                // touch a part.
+                bool beyond = false, touches_part = false;
+                block_local.resize(n);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    AssertThrow(coupled_rows.is_element(dofs[i]),
+                                ExcMessage("The tangent of '" + load->name() +
+                                           "' reaches a dof it did not "
+                                           "announce in add_couplings()"));
+                    touches_part =
+                      touches_part ||
+                      coupled_part_node[coupled_partitioner->global_to_local(
+                        dofs[i])];
+                    if (relevant.is_element(dofs[i]))
+                      block_local[i] = partitioner->global_to_local(dofs[i]);
+                    else
+                      beyond = true;
+                  }
+                AssertThrow(!(beyond && touches_part),
+                            ExcMessage(
+                              "The tangent of '" + load->name() +
+                              "' couples a rigid part's node with a node "
+                              "of a third rank: the quasi-static solver's "
+                              "rigid parts cannot border that block yet "
+                              "(run on one rank)"));
+                if (!beyond)
+                  parts->add_block(
+                    block_local.data(), n, K.data(), part_column, part_row);
+              }
             step_constraints.distribute_local_to_global(block_matrix,
                                                         block_rhs,
-                                                        block_global,
+                                                        dofs,
                                                         matrix,
                                                         rhs,
                                                         predictor);

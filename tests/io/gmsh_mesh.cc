@@ -545,10 +545,24 @@ main()
               "tied_block.msh",
               {{1, 20. * 20. * 10.}, {2, 20. * 20. * 2.}},
               {{1, 400.}, {2, 400.}, {3, 4. * 20. * 12.}, {4, 400.}, {5, 400.}});
+    Triangulation<3> stacked;
+    read_good(stacked, mesh_directory + "stacked_blocks.msh");
+    summarize(stacked,
+              "stacked_blocks.msh",
+              {{1, 10. * 10. * 5.}, {2, 10. * 10. * 5.}},
+              {{1, 100.},
+               {2, 100.},
+               {3, 100.},
+               {4, 100.},
+               {5, 2. * 10. * 5.},
+               {6, 2. * 10. * 5.},
+               {7, 2. * 10. * 5.},
+               {8, 2. * 10. * 5.}});
     const unsigned int shared = n_shared_vertices(bars) +
                                 n_shared_vertices(block) +
                                 n_shared_vertices(blocks) +
-                                n_shared_vertices(tied);
+                                n_shared_vertices(tied) +
+                                n_shared_vertices(stacked);
     out() << "  shared vertices between their bodies: " << shared
           << std::endl;
     check(shared == 0, "the contact examples' bodies have their own nodes");

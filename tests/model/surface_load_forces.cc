@@ -504,14 +504,13 @@ main(int argc, char **argv)
                                        0.};
     unsigned int                 n_blocks = 0;
     loads.add_tangents(point,
-                       [&](const std::vector<unsigned int> &dofs,
-                           const std::vector<double>       &K) {
+                       [&](const std::vector<types::global_dof_index> &dofs,
+                           const std::vector<double>                  &K) {
                          ++n_blocks;
                          const unsigned int n = dofs.size();
                          for (unsigned int i = 0; i < n; ++i)
                            for (unsigned int j = 0; j < n; ++j)
-                             Kw.local_element(dofs[i]) +=
-                               K[n * i + j] * w.local_element(dofs[j]);
+                             Kw(dofs[i]) += K[n * i + j] * w(dofs[j]);
                        });
     double local[2] = {0., 0.};
     for (unsigned int i = 0;

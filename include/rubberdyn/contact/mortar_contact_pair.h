@@ -169,6 +169,36 @@ namespace rubberdyn
                  VectorType                   &f,
                  model::ContributionResults   &results) override;
 
+      /** Yes: the forces are static, add_tangents() their derivative. */
+      bool
+      supports_implicit() const override;
+
+      /** No: D and M differ, and only the slave side's normal turns. */
+      bool
+      symmetric_tangent() const override;
+
+      /**
+       * The exact derivative of the forces of add_forces() at @p point, for
+       * the quasi-static solver: one block per active slave node of this
+       * rank's facets, over the nodes of its slave facets and their
+       * candidate master facets, by forward automatic differentiation
+       * (Sacado) of the force computation (clipping, integration, nodal
+       * normal, return mapping). It uses the candidates of the last
+       * add_forces() (the solver evaluates the residual first) and the
+       * accepted friction state. Collective (one ghost update).
+       */
+      void
+      add_tangents(const model::EvaluationPoint &point,
+                   const TangentBlock           &add) const override;
+
+      /** The blocks add_tangents() may write, from the last search. */
+      void
+      add_couplings(const CouplingBlock &add) const override;
+
+      /** The number of searches so far: new candidates, new couplings. */
+      unsigned int
+      couplings_version() const override;
+
       /** Make the friction state of the last evaluation the accepted one. */
       void
       accept_step() override;

@@ -18,7 +18,11 @@ namespace rubberdyn
      * a sits at (xi, eta) = (-1, -1), (1, -1), (1, 1), (-1, 1) and has the
      * shape function N_a = (1 + xi_a xi)(1 + eta_a eta)/4.
      */
-    using FacetCorners = std::array<Point<3>, 4>;
+    template <typename Number>
+    using FacetCornersOf = std::array<Point<3, Number>, 4>;
+
+    /** The corners of a facet in double precision. */
+    using FacetCorners = FacetCornersOf<double>;
 
     /**
      * The mortar integrals of one slave facet against one master facet over
@@ -31,13 +35,17 @@ namespace rubberdyn
      * \mathbf x}_k = \int N_a (\mathbf x - \hat{\mathbf x})\,dA$ (Puso &
      * Laursen, Comput. Methods Appl. Mech. Engrg. 193 (2004) 601, eq. 17).
      */
-    struct MortarSegment
+    template <typename Number>
+    struct MortarSegmentOf
     {
-      double D[4][4];
-      double M[4][4];
+      Number D[4][4];
+      Number M[4][4];
       /** Area of the overlap (mm^2): the sum of all D_ab (or of all M_ak). */
-      double area;
+      Number area;
     };
+
+    /** The mortar integrals in double precision. */
+    using MortarSegment = MortarSegmentOf<double>;
 
     /**
      * Integrate the mortar segment of @p slave and @p master (Puso &
@@ -55,15 +63,23 @@ namespace rubberdyn
      * The master facet must face the slave one (its outward normal
      * against the slave's); a master facet seen from behind, or no overlap,
      * gives false and leaves @p segment undefined.
+     *
+     * Instantiated for double and for Sacado's forward-mode number
+     * Sacado::Fad::DFad<double> (the contact tangent differentiates the
+     * integrals with respect to the corners: the clipping and the inverse
+     * maps are differentiated along with their values; the decisions,
+     * which vertices the overlap has, are taken on the values).
      */
+    template <typename Number>
     bool
-    integrate_mortar_segment(const FacetCorners &slave,
-                             const FacetCorners &master,
-                             MortarSegment      &segment);
+    integrate_mortar_segment(const FacetCornersOf<Number> &slave,
+                             const FacetCornersOf<Number> &master,
+                             MortarSegmentOf<Number>      &segment);
 
     /** The facet's shape functions at (xi, eta) (FacetCorners). */
+    template <typename Number>
     void
-    facet_shape_values(const double xi, const double eta, double (&N)[4]);
+    facet_shape_values(const Number &xi, const Number &eta, Number (&N)[4]);
   } // namespace contact
 } // namespace rubberdyn
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
 
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/model/rigid_body.h>
@@ -152,14 +153,24 @@ namespace rubberdyn
       }
 
       /**
-       * Receives one block of a tangent (add_tangents()): the local vector
-       * indices (owned or ghost, of the solver's partitioner) of its n dofs
-       * and the n x n derivative of the resisting force with respect to
-       * their displacements, row-major (kN/mm).
+       * Receives one block of a tangent (add_tangents()): the global dof
+       * indices of its n dofs and the n x n derivative of the resisting
+       * force with respect to their displacements, row-major (kN/mm).
+       * Global, because a contact block may couple dofs that are neither
+       * owned nor ghosts of the solver's partition (a master facet on a
+       * third rank); such couplings must have been announced by
+       * add_couplings().
        */
       using TangentBlock =
-        std::function<void(const std::vector<unsigned int> &dofs,
-                           const std::vector<double>       &K)>;
+        std::function<void(const std::vector<types::global_dof_index> &dofs,
+                           const std::vector<double>                  &K)>;
+
+      /**
+       * Receives a set of global dofs (add_couplings()) whose tangent blocks
+       * may couple every dof of the set with every other.
+       */
+      using CouplingBlock =
+        std::function<void(const std::vector<types::global_dof_index> &dofs)>;
 
       /**
        * Whether the implicit (quasi-static) solver can use this
@@ -196,6 +207,30 @@ namespace rubberdyn
       {
         (void)point;
         (void)add;
+      }
+
+      /**
+       * For the implicit solver's sparsity pattern: the couplings that
+       * add_tangents() may write beyond those of the elements (which share
+       * a cell) and beyond a node with itself, from this rank's share. The
+       * default adds none: right for face and node blocks. The solver asks
+       * again whenever couplings_version() changed.
+       */
+      virtual void
+      add_couplings(const CouplingBlock &add) const
+      {
+        (void)add;
+      }
+
+      /**
+       * A number that changes whenever the couplings of add_couplings()
+       * change (a contact search found new candidates). The solver compares
+       * it before each assembly and rebuilds its pattern on a change.
+       */
+      virtual unsigned int
+      couplings_version() const
+      {
+        return 0;
       }
 
       /**

@@ -17,6 +17,7 @@ namespace rubberdyn
   {
     class RigidSurfaceContact;
     class RigidSurfaceForces;
+    class MortarContactPair;
   } // namespace contact
   namespace elements
   {
@@ -160,6 +161,8 @@ namespace rubberdyn
       std::vector<RigidBody>                                      bodies;
       std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;
       std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  contact_forces;
+      /** The mortar contact pairs (Contact pairs), in the model's order. */
+      std::vector<std::unique_ptr<contact::MortarContactPair>>   contact_pairs;
       std::unique_ptr<postprocess::HistoryNodes>              history_nodes;
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
       /** Boundary condition and direction of each constraint group. */

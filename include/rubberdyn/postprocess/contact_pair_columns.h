@@ -44,10 +44,18 @@ namespace rubberdyn
       std::vector<std::string>
       history_columns() const override;
 
-      /** Collective. */
+      /** Collective: append_values(). */
       void
       history_values(const SimulationView &view,
                      std::vector<double>  &values) override;
+
+      /**
+       * Append the columns' values at the pairs' last evaluation to
+       * @p values (for a run without a SimulationView: the quasi-static
+       * one). Collective.
+       */
+      void
+      append_values(std::vector<double> &values) const;
 
       /**
        * Per pair, for benchmarks: `<pair>_searches`, `<pair>_candidates`

@@ -1,0 +1,258 @@
+#ifndef rubberdyn_source_contact_mortar_contact_pair_implementation_h
+#define rubberdyn_source_contact_mortar_contact_pair_implementation_h
+// What is behind contact::MortarContactPair's interface (private to
+// source/contact: the pair's forces in mortar_contact_pair.cc, its tangent
+// for the quasi-static solver in mortar_contact_tangent.cc).
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <rubberdyn/base/vector.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
+#include <rubberdyn/contact/mortar_segment.h>
+#include <rubberdyn/model/force_contribution.h>
+#include <rubberdyn/model/model.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace rubberdyn
+{
+  namespace contact
+  {
+    namespace mortar_internal
+    {
+      /** A facet as gathered from its rank. */
+      struct GatheredFacet
+      {
+        /** Global dofs x, y, z of its corners, in FacetCorners' order. */
+        types::global_dof_index dofs[4][3];
+        /** Reference coordinates of its corners (mm). */
+        double X[4][3];
+        /** Bulk modulus of its element times area over volume (GPa/mm). */
+        double stiffness;
+        /** Rank that owns its cell. */
+        unsigned int rank;
+        /** Bit 0: on the slave surface; bit 1: on the master surface. */
+        unsigned int sides;
+
+        /** For Utilities::MPI::all_gather(). */
+        template <class Archive>
+        void
+        serialize(Archive &archive, const unsigned int)
+        {
+          archive &dofs &X &stiffness &rank &sides;
+        }
+      };
+
+      /**
+       * A segment: its slave facet (an index into the pass's gap facets),
+       * its master facet and the integrals.
+       */
+      struct StoredSegment
+      {
+        unsigned int  slave, master;
+        MortarSegment integrals;
+      };
+    } // namespace mortar_internal
+    using namespace mortar_internal;
+
+
+
+    /** Everything behind the interface (the class documentation). */
+    struct MortarContactPair::Implementation
+    {
+      /** One direction of the pair: a slave and a master surface. */
+      struct Pass
+      {
+        std::vector<unsigned int> slave_facets, master_facets;
+        /** Penalty stiffness per area (GPa/mm). */
+        double penalty = 0.;
+        /**
+         * The slave facets this rank integrates (its own and those of other
+         * ranks that share a node with them), ascending.
+         */
+        std::vector<unsigned int> gap_facets;
+        /** Candidate master facets of each gap facet (ascending). */
+        std::vector<std::vector<unsigned int>> candidates;
+        /** The nodes of the gap facets (ascending), and for each its slave
+         * facets (for the normal) in CSR form. */
+        std::vector<unsigned int> nodes, facet_start, node_facets;
+        /** For each of the nodes, the gap facets around it (indices into
+         * gap_facets), in CSR form. */
+        std::vector<unsigned int> gap_start, node_gap_facets;
+        /** Whether this rank books a node's statistics (by node index). */
+        std::vector<bool> counted;
+        /** Segments of the last evaluation (tied: of the reference). */
+        std::vector<StoredSegment> segments;
+        /** Tied: whether each node (by node index) is tied, and its
+         * covered area in the reference configuration (mm^2). */
+        std::vector<bool>   tied;
+        std::vector<double> tied_area;
+        /**
+         * Coulomb, by node index: the tangential traction (GPa) and the
+         * energy in its spring (J), of the last accepted step and of the
+         * last evaluation.
+         */
+        std::vector<Tensor<1, 3>> accepted_tangential, trial_tangential;
+        std::vector<double>       accepted_spring_energy, trial_spring_energy;
+        /** Coulomb: the distance each node has slipped (mm), accepted and
+         * trial. */
+        std::vector<double> accepted_slip_distance, trial_slip_distance;
+        /** By node index, of the last evaluation: pressure (GPa) and mean
+         * gap (mm, 0 where nothing is covered), for ParaView. */
+        std::vector<double> shown_pressure, shown_gap;
+      };
+
+      Implementation(const model::Model                 &model,
+                     const model::ContactPairDefinition &definition);
+
+      /** Positions x = X + u of every surface node. */
+      void
+      update_positions(const VectorType &u_pair);
+
+      /**
+       * Positions from the solver's displacement @p u: its owned surface
+       * dofs to the pair's vector, whose ghosts are then updated
+       * (collective), and update_positions().
+       */
+      void
+      load_positions(const VectorType &u);
+
+      /** Rebuild the candidate lists if a node moved far enough. */
+      void
+      search_if_needed();
+
+      /** Integrate the segments of @p pass at the current positions. */
+      void
+      integrate(Pass &pass, const bool keep_all);
+
+      /** The nodal normals of @p pass's nodes at the current positions. */
+      void
+      compute_normals(const Pass &pass);
+
+      /** Whether this rank owns the @p i-th gap facet of @p pass. */
+      bool
+      owns(const Pass &pass, const unsigned int i) const
+      {
+        return facets[pass.gap_facets[i]].rank == my_rank;
+      }
+
+      /**
+       * The nodes (ascending) on which the forces of the @p k-th node of
+       * @p pass depend or act: those of its slave facets, and of their
+       * candidate master facets (tied: of their segments' master facets).
+       */
+      void
+      patch_of(const Pass                &pass,
+               const unsigned int         k,
+               std::vector<unsigned int> &patch) const;
+
+      /**
+       * The forces that the traction of the @p k-th node of @p pass puts,
+       * through this rank's segments, on the nodes of its @p patch, at the
+       * positions @p y of those nodes (by patch index): the same arithmetic
+       * as add_forces(), as a function of @p y alone (the accepted
+       * friction state and the candidates fixed). With Sacado numbers in
+       * @p y the forces carry their derivatives (the tangent). Returns
+       * false (and leaves @p force alone) if the node carries no traction.
+       */
+      template <typename Number>
+      bool
+      node_forces(const Pass                          &pass,
+                  const unsigned int                   k,
+                  const std::vector<unsigned int>     &patch,
+                  const std::vector<Point<3, Number>> &y,
+                  const double                         time,
+                  std::vector<Tensor<1, 3, Number>>   &force) const;
+
+      /**
+       * Add the tangent blocks of @p pass at the current positions: one
+       * per active slave node, over its patch (patch_of()), by forward
+       * automatic differentiation of node_forces().
+       */
+      void
+      add_tangents(const Pass                                   &pass,
+                   const double                                  time,
+                   const model::ForceContribution::TangentBlock &add) const;
+
+      /** Whether facets f and g share a corner. */
+      bool
+      share_a_node(const unsigned int f, const unsigned int g) const;
+
+      /** A copy: the pair does not depend on where it was defined. */
+      const model::ContactPairDefinition definition;
+      MPI_Comm                           comm;
+      unsigned int                       my_rank;
+
+      std::vector<GatheredFacet> facets;
+      /** Corners' node indices of each facet. */
+      std::vector<std::array<unsigned int, 4>> facet_nodes;
+      /** Per node: local indices (pair partitioner) of x, y, z; X. */
+      std::vector<std::array<unsigned int, 3>> node_dofs;
+      /** Per node: global dofs of x, y, z (for the tangent's blocks). */
+      std::vector<std::array<types::global_dof_index, 3>> node_global_dofs;
+      std::vector<Point<3>>                               node_reference;
+      std::vector<Point<3>>                               x, x_at_search;
+      /**
+       * Per node: the sum over passes of the penalty times the whole facet
+       * area around it, its side's int N dA (kN/mm).
+       */
+      std::vector<double> node_stiffness;
+
+      /** Area of facet @p f in the reference configuration (mm^2). */
+      double
+      facet_area(const unsigned int f) const
+      {
+        const GatheredFacet &facet = facets[f];
+        Tensor<1, 3>         d1, d2;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            d1[d] = facet.X[2][d] - facet.X[0][d];
+            d2[d] = facet.X[3][d] - facet.X[1][d];
+          }
+        return 0.5 * cross_product_3d(d1, d2).norm();
+      }
+
+      std::vector<Pass> passes;
+      /** Capture margin of the search (mm). */
+      double margin   = 0.;
+      bool   searched = false;
+
+      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+      VectorType                                         u_pair, f_pair;
+      /** Local indices of the surface nodes' dofs that this rank owns. */
+      std::vector<unsigned int> owned_surface_dofs;
+
+      /** Scratch by node index: covered area, weighted gap, normal,
+       * traction. */
+      std::vector<double>       area;
+      std::vector<Tensor<1, 3>> gap, normal, traction;
+
+      /** Stable step of the penalty (ms), once the masses are known. */
+      double time_step = -1.;
+
+      /** Coulomb: whether the pair has friction. */
+      bool coulomb = false;
+      /** Coulomb: the weighted slip increment since the accepted step
+       * (mm^3: times the covered area), by node index. */
+      std::vector<Tensor<1, 3>> slip;
+      /** Coulomb: node positions and time of the last accepted step. */
+      std::vector<Point<3>> x_accepted;
+      double                time_accepted = 0.;
+      /** Coulomb: friction work up to the accepted step, and of the last
+       * evaluation, this rank's booked nodes (J). */
+      double accepted_friction_work = 0., trial_dissipation = 0.;
+      /** Time of the last evaluation; whether it awaits accept_step(). */
+      double trial_time    = 0.;
+      bool   trial_pending = false;
+      /** Energy in the pair's springs at the last evaluation (J). */
+      double             energy = 0.;
+      ContactPairTimings timings;
+    };
+  } // namespace contact
+} // namespace rubberdyn
+
+#endif

@@ -1,0 +1,389 @@
+// The mortar contact pair's tangent for the quasi-static solver: the exact
+// derivative of its forces (doc/theory.md, section 15.7), by forward
+// automatic differentiation of the force computation itself, node by node.
+#include <deal.II/base/tensor.h>
+
+#include <rubberdyn/contact/mortar_contact_pair.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ad_number.h"
+#include "mortar_contact_pair_implementation.h"
+
+namespace rubberdyn
+{
+  namespace contact
+  {
+    namespace
+    {
+      /** A vector of numbers from one of doubles (a constant). */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      constant(const Tensor<1, 3> &v)
+      {
+        Tensor<1, 3, Number> result;
+        for (unsigned int d = 0; d < 3; ++d)
+          result[d] = v[d];
+        return result;
+      }
+
+      /** y - X for a point of numbers and one of doubles. */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      minus(const Point<3, Number> &y, const Point<3> &X)
+      {
+        Tensor<1, 3, Number> result;
+        for (unsigned int d = 0; d < 3; ++d)
+          result[d] = y[d] - X[d];
+        return result;
+      }
+
+      /** The forces of one segment's row a on the patch. */
+      template <typename Number>
+      struct SegmentRow
+      {
+        unsigned int slave_facet, master_facet;
+        Number       D[4], M[4];
+      };
+    } // namespace
+
+
+
+    void
+    MortarContactPair::Implementation::patch_of(
+      const Pass                &pass,
+      const unsigned int         k,
+      std::vector<unsigned int> &patch) const
+    {
+      patch.clear();
+      const auto add_facet = [&](const unsigned int f) {
+        patch.insert(patch.end(), facet_nodes[f].begin(), facet_nodes[f].end());
+      };
+      for (unsigned int j = pass.facet_start[k]; j < pass.facet_start[k + 1];
+           ++j)
+        add_facet(pass.node_facets[j]);
+      const bool tied =
+        definition.type == model::ContactPairDefinition::Type::tied;
+      for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1]; ++j)
+        {
+          const unsigned int i = pass.node_gap_facets[j];
+          add_facet(pass.gap_facets[i]);
+          if (!tied)
+            for (const unsigned int m : pass.candidates[i])
+              add_facet(m);
+        }
+      if (tied)
+        for (const StoredSegment &s : pass.segments)
+          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
+               ++j)
+            if (s.slave == pass.node_gap_facets[j])
+              add_facet(s.master);
+      std::sort(patch.begin(), patch.end());
+      patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+    }
+
+
+
+    template <typename Number>
+    bool
+    MortarContactPair::Implementation::node_forces(
+      const Pass                          &pass,
+      const unsigned int                   k,
+      const std::vector<unsigned int>     &patch,
+      const std::vector<Point<3, Number>> &y,
+      const double                         time,
+      std::vector<Tensor<1, 3, Number>>   &force) const
+    {
+      using Vector            = Tensor<1, 3, Number>;
+      const unsigned int node = pass.nodes[k];
+      const auto         at   = [&](const unsigned int n) -> unsigned int {
+        return std::lower_bound(patch.begin(), patch.end(), n) - patch.begin();
+      };
+      const bool tied =
+        definition.type == model::ContactPairDefinition::Type::tied;
+      if (tied && !pass.tied[node])
+        return false;
+
+      // The rows of this node in this rank's segments (they carry its
+      // traction), its covered area, weighted gap and weighted slip.
+      std::vector<SegmentRow<Number>> rows;
+      Number                          A = 0.;
+      Vector                          gap, slip;
+      const auto                      corner_of = [&](const unsigned int f) {
+        for (unsigned int a = 0; a < 4; ++a)
+          if (facet_nodes[f][a] == node)
+            return a;
+        Assert(false, ExcInternalError());
+        return 0u;
+      };
+      if (tied)
+        {
+          // The reference integrals, fixed: the gap is linear in y.
+          for (const StoredSegment &s : pass.segments)
+            {
+              const unsigned int f = pass.gap_facets[s.slave];
+              if (std::find(facet_nodes[f].begin(),
+                            facet_nodes[f].end(),
+                            node) == facet_nodes[f].end())
+                continue;
+              const unsigned int a  = corner_of(f);
+              const auto        &sn = facet_nodes[f];
+              const auto        &mn = facet_nodes[s.master];
+              SegmentRow<Number> row{f, s.master, {}, {}};
+              for (unsigned int b = 0; b < 4; ++b)
+                {
+                  row.D[b] = s.integrals.D[a][b];
+                  row.M[b] = s.integrals.M[a][b];
+                  gap += row.D[b] * minus(y[at(sn[b])], node_reference[sn[b]]) -
+                         row.M[b] * minus(y[at(mn[b])], node_reference[mn[b]]);
+                }
+              if (owns(pass, s.slave))
+                rows.push_back(row);
+            }
+          A = pass.tied_area[node];
+        }
+      else
+        for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1]; ++j)
+          {
+            const unsigned int     i  = pass.node_gap_facets[j];
+            const unsigned int     f  = pass.gap_facets[i];
+            const unsigned int     a  = corner_of(f);
+            const auto            &sn = facet_nodes[f];
+            FacetCornersOf<Number> slave_corners, master_corners;
+            for (unsigned int b = 0; b < 4; ++b)
+              slave_corners[b] = y[at(sn[b])];
+            Tensor<1, 3> facet_normal;
+            {
+              const Vector n =
+                cross_product_3d(slave_corners[2] - slave_corners[0],
+                                 slave_corners[3] - slave_corners[1]);
+              for (unsigned int d = 0; d < 3; ++d)
+                facet_normal[d] = value_of(n[d]);
+              facet_normal /= facet_normal.norm();
+            }
+            MortarSegmentOf<Number> segment;
+            for (const unsigned int m : pass.candidates[i])
+              {
+                const auto &mn = facet_nodes[m];
+                for (unsigned int b = 0; b < 4; ++b)
+                  master_corners[b] = y[at(mn[b])];
+                if (!integrate_mortar_segment(slave_corners,
+                                              master_corners,
+                                              segment))
+                  continue;
+                // The same cut as add_forces(): farther apart than the
+                // margin is not the contact's.
+                Tensor<1, 3> total;
+                for (unsigned int c = 0; c < 4; ++c)
+                  for (unsigned int b = 0; b < 4; ++b)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      total[d] += value_of(segment.D[c][b]) *
+                                    value_of(slave_corners[b][d]) -
+                                  value_of(segment.M[c][b]) *
+                                    value_of(master_corners[b][d]);
+                if (std::abs(facet_normal * total) >
+                    margin * value_of(segment.area))
+                  continue;
+                SegmentRow<Number> row{f, m, {}, {}};
+                for (unsigned int b = 0; b < 4; ++b)
+                  {
+                    row.D[b] = segment.D[a][b];
+                    row.M[b] = segment.M[a][b];
+                    A += row.D[b];
+                    gap += row.D[b] * slave_corners[b] -
+                           row.M[b] * master_corners[b];
+                    if (coulomb)
+                      slip +=
+                        row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
+                        row.M[b] * minus(master_corners[b], x_accepted[mn[b]]);
+                  }
+                if (owns(pass, i))
+                  rows.push_back(row);
+              }
+          }
+      if (rows.empty() || !(value_of(A) > 0.))
+        return false;
+
+      // The traction, as add_forces() has it.
+      Vector traction;
+      if (tied)
+        traction = Number(-pass.penalty / A) * gap;
+      else
+        {
+          Vector n;
+          for (unsigned int j = pass.facet_start[k];
+               j < pass.facet_start[k + 1];
+               ++j)
+            {
+              const auto &c = facet_nodes[pass.node_facets[j]];
+              n += cross_product_3d(y[at(c[2])] - y[at(c[0])],
+                                    y[at(c[3])] - y[at(c[1])]);
+            }
+          n /= Number(n.norm());
+          const Number g = -(n * gap) / A;
+          if (!(value_of(g) < 0.))
+            return false;
+          const Number p = -pass.penalty * g;
+          traction       = Number(-p) * n;
+          if (coulomb)
+            {
+              const model::ContactPairDefinition &def = definition;
+              const Tensor<1, 3> &accepted = pass.accepted_tangential[node];
+              Vector              old      = constant<Number>(accepted);
+              old -= (old * n) * n;
+              // (The norms only where they are not zero: their derivative
+              // is undefined there.)
+              if (value_of(old.norm()) > 0.)
+                old *= Number(accepted.norm() / old.norm());
+              Vector increment = slip / A;
+              increment -= (increment * n) * n;
+              Vector       tangential = old - pass.penalty * increment;
+              const double step       = time - time_accepted;
+              Number       rate       = 0.;
+              if (step > 0. && value_of(increment.norm()) > 0.)
+                rate = increment.norm() / step;
+              using std::exp;
+              const Number mu = def.dynamic_friction +
+                                (def.static_friction - def.dynamic_friction) *
+                                  exp(-def.decay * rate);
+              const Number limit = mu * p;
+              if (value_of(tangential.norm()) > value_of(limit))
+                tangential *= Number(limit / tangential.norm());
+              traction += tangential;
+            }
+        }
+
+      // D t on the slave side, -M t on the master side.
+      for (const SegmentRow<Number> &row : rows)
+        for (unsigned int b = 0; b < 4; ++b)
+          {
+            force[at(facet_nodes[row.slave_facet][b])] += row.D[b] * traction;
+            force[at(facet_nodes[row.master_facet][b])] -= row.M[b] * traction;
+          }
+      return true;
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::add_tangents(
+      const Pass                                   &pass,
+      const double                                  time,
+      const model::ForceContribution::TangentBlock &add) const
+    {
+      std::vector<unsigned int>            patch;
+      std::vector<Point<3>>                y;
+      std::vector<Tensor<1, 3>>            force;
+      std::vector<Point<3, ADNumber>>      y_ad;
+      std::vector<Tensor<1, 3, ADNumber>>  force_ad;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  K;
+      for (unsigned int k = 0; k < pass.nodes.size(); ++k)
+        {
+          // Only a node with a facet of this rank carries forces here.
+          bool own = false;
+          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
+               ++j)
+            own = own || owns(pass, pass.node_gap_facets[j]);
+          if (!own)
+            continue;
+          patch_of(pass, k, patch);
+          const unsigned int n_nodes = patch.size();
+          // The values first: most nodes carry no traction.
+          y.resize(n_nodes);
+          for (unsigned int j = 0; j < n_nodes; ++j)
+            y[j] = x[patch[j]];
+          force.assign(n_nodes, Tensor<1, 3>());
+          if (!node_forces(pass, k, patch, y, time, force))
+            continue;
+
+          const unsigned int n = 3 * n_nodes;
+          y_ad.resize(n_nodes);
+          for (unsigned int j = 0; j < n_nodes; ++j)
+            for (unsigned int d = 0; d < 3; ++d)
+              y_ad[j][d] = ADNumber(n, 3 * j + d, x[patch[j]][d]);
+          force_ad.assign(n_nodes, Tensor<1, 3, ADNumber>());
+          node_forces(pass, k, patch, y_ad, time, force_ad);
+          // The resisting force is minus the force on the solid.
+          dofs.resize(n);
+          K.assign(n * n, 0.);
+          for (unsigned int i = 0; i < n_nodes; ++i)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                dofs[3 * i + d]   = node_global_dofs[patch[i]][d];
+                const ADNumber &f = force_ad[i][d];
+                if (f.size() == 0)
+                  continue;
+                for (unsigned int j = 0; j < n; ++j)
+                  K[n * (3 * i + d) + j] = -f.dx(j);
+              }
+          add(dofs, K);
+        }
+    }
+
+
+
+    bool
+    MortarContactPair::supports_implicit() const
+    {
+      return true;
+    }
+
+
+
+    bool
+    MortarContactPair::symmetric_tangent() const
+    {
+      // D and M differ, and the normal turns with the slave side only.
+      return false;
+    }
+
+
+
+    void
+    MortarContactPair::add_tangents(const model::EvaluationPoint &point,
+                                    const TangentBlock           &add) const
+    {
+      Implementation &I = *impl;
+      I.load_positions(point.displacement);
+      for (const Implementation::Pass &pass : I.passes)
+        I.add_tangents(pass, point.time, add);
+    }
+
+
+
+    void
+    MortarContactPair::add_couplings(const CouplingBlock &add) const
+    {
+      const Implementation                &I = *impl;
+      std::vector<unsigned int>            patch;
+      std::vector<types::global_dof_index> dofs;
+      for (const Implementation::Pass &pass : I.passes)
+        for (unsigned int k = 0; k < pass.nodes.size(); ++k)
+          {
+            bool own = false;
+            for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
+                 ++j)
+              own = own || I.owns(pass, pass.node_gap_facets[j]);
+            if (!own)
+              continue;
+            I.patch_of(pass, k, patch);
+            dofs.clear();
+            for (const unsigned int node : patch)
+              dofs.insert(dofs.end(),
+                          I.node_global_dofs[node].begin(),
+                          I.node_global_dofs[node].end());
+            add(dofs);
+          }
+    }
+
+
+
+    unsigned int
+    MortarContactPair::couplings_version() const
+    {
+      return impl->timings.searches;
+    }
+  } // namespace contact
+} // namespace rubberdyn

@@ -1,0 +1,247 @@
+// The mortar contact pair's tangent (contact::MortarContactPair::
+// add_tangents(), for the quasi-static solver) against central finite
+// differences of its forces (add_forces()): the block of
+// parameter_files/meshes/block_on_plate.msh (5 x 5 faces) pressed into the
+// plate (4 x 4 faces: non-matching), shifted so that it overhangs the
+// plate's edge (partly covered slave facets: the clipping's derivative),
+// tilted, and with every vertex displaced by a smooth pseudo-random field
+// of 2e-3 mm (warped, non-parallel facets: the derivatives of D, M, the
+// nodal normal and the covered area all count). For a direction w (the
+// same kind of field, on both bodies) the tangent's K w must equal
+// -(f(u + h w) - f(u - h w)) / 2h over all dofs to 1e-6 relative
+// (h = 1e-6 mm: truncation ~(h / 1e-2 mm)^2 = 1e-8, round-off ~1e-12;
+// leaving out the derivative of any of D, M or the normal gives errors
+// of 1e-3 to 1). Cases:
+//  1. frictionless;
+//  2. frictionless, two-pass (the plate's facets as slaves too);
+//  3. Coulomb, sticking: accepted at u (slid there from the reference
+//     place, every traction on the cone), evaluated after a motion back by
+//     1e-4 mm in 1 ms (the elastic trial traction turns inside the cone);
+//  4. Coulomb, slipping with the decay law (FS = 0.3, FD = 0.15, DC =
+//     1 ms/mm): the same, 2e-3 mm on in 1e-3 ms (mu depends on the slip
+//     rate);
+//  5. tied (Tie tolerance 0.01 mm at the block's initial contact).
+// The tangent must also be non-trivial (|K w| > 0) and its blocks must
+// stay within the couplings of add_couplings(). Run on 1 and 2 ranks.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <rubberdyn/contact/mortar_contact_pair.h>
+#include <rubberdyn/model/force_contribution.h>
+#include <rubberdyn/model/model.h>
+
+#include <cmath>
+#include <set>
+
+#include "../model/model_fixtures.h"
+#include "../tests.h"
+
+using namespace dealii;
+using namespace rubberdyn;
+using testing::check;
+using testing::out;
+
+namespace
+{
+  /** A smooth pseudo-random vector field of amplitude 1 (mm). */
+  Tensor<1, 3>
+  wobble(const Point<3> &X, const double phase)
+  {
+    Tensor<1, 3> w;
+    for (unsigned int d = 0; d < 3; ++d)
+      w[d] = std::sin(1.7 * X[0] + 2.3 * X[1] + 3.1 * X[2] + phase + 1.9 * d) *
+             std::cos(0.9 * X[0] - 1.3 * X[1] + 0.7 * d + 0.5 * phase);
+    return w;
+  }
+
+  /** The owned entries of @p f on every rank, as one full vector. */
+  Vector<double>
+  gather(const VectorType &f, const MPI_Comm comm)
+  {
+    Vector<double> full(f.size());
+    for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
+      full[f.get_partitioner()->local_to_global(i)] = f.local_element(i);
+    Utilities::MPI::sum(full, comm, full);
+    return full;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+
+  model::Model model(comm);
+  fixtures::make_block_on_plate(model, fixtures::steel_part("block", 1));
+
+  VectorType u(model.partitioner), v(model.partitioner),
+    mass(model.partitioner), w(model.partitioner), f(model.partitioner);
+  mass = 1.;
+  mass.update_ghost_values();
+  // The block (material 1): over the plate's edge at x = 20 (block x from
+  // 11 to 21), tilted about y, into the plate by 5e-3 to 1.5e-2 mm, warped.
+  const auto place = [&](VectorType  &vector,
+                         const double shift,
+                         const double depth,
+                         const double warp) {
+    fixtures::set_vertex_displacements(
+      model,
+      vector,
+      [&](const types::material_id id, const Point<3> &X) {
+        Tensor<1, 3> d = warp * wobble(X, id == 1 ? 0. : 1.);
+        if (id == 1)
+          {
+            d[0] += 6. + shift;
+            d[2] += -depth - 1e-3 * (X[0] - 5.);
+          }
+        return d;
+      });
+  };
+  fixtures::set_vertex_displacements(model,
+                                     w,
+                                     [&](const types::material_id id,
+                                         const Point<3>          &X) {
+                                       return wobble(X, id == 1 ? 2. : 3.);
+                                     });
+  std::vector<model::RigidBody> bodies;
+
+  const auto forces = [&](contact::MortarContactPair &pair,
+                          const VectorType           &at,
+                          const double                time) {
+    const model::EvaluationPoint point{at, v, mass, bodies, time};
+    model::ContributionResults   results;
+    results.reset(2, 0);
+    f = 0.;
+    pair.add_forces(point, f, results);
+    return gather(f, comm);
+  };
+
+  // Compare K w with the central difference at u (at time t); the pair
+  // has been evaluated (and its state accepted) as the case needs.
+  const auto compare = [&](const std::string          &name,
+                           contact::MortarContactPair &pair,
+                           const double                time) {
+    const double h = 1e-6;
+    VectorType   plus(u), minus(u);
+    plus.add(h, w);
+    minus.add(-h, w);
+    plus.update_ghost_values();
+    minus.update_ghost_values();
+    const Vector<double> f_plus  = forces(pair, plus, time);
+    const Vector<double> f_minus = forces(pair, minus, time);
+    forces(pair, u, time);
+    const unsigned int active =
+      Utilities::MPI::sum(pair.last_statistics().active_nodes, comm);
+
+    std::set<std::pair<types::global_dof_index, types::global_dof_index>>
+      announced;
+    pair.add_couplings([&](const std::vector<types::global_dof_index> &dofs) {
+      for (const auto i : dofs)
+        for (const auto j : dofs)
+          announced.emplace(i, j);
+    });
+    bool                         within = true;
+    Vector<double>               Kw(u.size());
+    const Vector<double>         w_full = gather(w, comm);
+    const model::EvaluationPoint point{u, v, mass, bodies, time};
+    pair.add_tangents(point,
+                      [&](const std::vector<types::global_dof_index> &dofs,
+                          const std::vector<double>                  &K) {
+                        const unsigned int n = dofs.size();
+                        for (unsigned int i = 0; i < n; ++i)
+                          for (unsigned int j = 0; j < n; ++j)
+                            {
+                              Kw[dofs[i]] += K[n * i + j] * w_full[dofs[j]];
+                              if (K[n * i + j] != 0. &&
+                                  announced.count({dofs[i], dofs[j]}) == 0)
+                                within = false;
+                            }
+                      });
+    Utilities::MPI::sum(Kw, comm, Kw);
+    within = !Utilities::MPI::logical_or(!within, comm);
+    Vector<double> difference(u.size());
+    for (unsigned int i = 0; i < u.size(); ++i)
+      difference[i] = -(f_plus[i] - f_minus[i]) / (2. * h);
+    const double norm = difference.l2_norm();
+    difference -= Kw;
+    const double error = difference.l2_norm() / norm;
+    if (root)
+      out() << name << ": " << active << " active slave nodes, K w equals "
+            << "the central difference to below 1e-6: "
+            << (error < 1e-6 ? "yes" : "no") << "; blocks within the "
+            << "announced couplings: " << (within ? "yes" : "no") << std::endl;
+    check(norm > 0., name + ": a non-trivial tangent");
+    check(error < 1e-6,
+          name + ": K w against the central difference (error " +
+            testing::sci(error) + ")");
+    check(within, name + ": blocks within add_couplings()");
+  };
+
+  model::ContactPairDefinition definition;
+  definition.name                = "pair";
+  definition.slave_boundary_ids  = {1};
+  definition.master_boundary_ids = {2};
+
+  // 1., 2. Frictionless, one pass and two.
+  for (const bool two_pass : {false, true})
+    {
+      definition.two_pass = two_pass;
+      contact::MortarContactPair pair(model, definition);
+      place(u, 0., 1e-2, 2e-3);
+      compare(two_pass ? "2. frictionless, two-pass" : "1. frictionless",
+              pair,
+              0.);
+    }
+  definition.two_pass = false;
+
+  // 3., 4. Coulomb: accepted at u, then moved along x.
+  definition.type             = model::ContactPairDefinition::Type::coulomb;
+  definition.static_friction  = 0.3;
+  definition.dynamic_friction = 0.15;
+  definition.decay            = 1.;
+  for (const double motion : {-1e-4, 2e-3})
+    {
+      contact::MortarContactPair pair(model, definition);
+      place(u, 0., 1e-2, 2e-3);
+      forces(pair, u, 0.);
+      pair.accept_step();
+      // (Slowly back, quickly on: the decay law barely shrinks the cone
+      // for the first.)
+      const double time = motion < 0. ? 1. : 1e-3;
+      place(u, motion, 1e-2, 2e-3);
+      forces(pair, u, time);
+      const unsigned int slipping =
+        Utilities::MPI::sum(pair.last_statistics().slipping_nodes, comm);
+      const unsigned int active =
+        Utilities::MPI::sum(pair.last_statistics().active_nodes, comm);
+      if (motion < 0.)
+        check(slipping == 0, "3. every node sticks");
+      else
+        check(slipping == active, "4. every node slips");
+      compare(motion < 0. ? "3. Coulomb, sticking" :
+                            "4. Coulomb, slipping, decay law",
+              pair,
+              time);
+    }
+
+  // 5. Tied: the block tied where it stands on the plate, then moved.
+  {
+    definition.type          = model::ContactPairDefinition::Type::tied;
+    definition.tie_tolerance = 1e-2;
+    contact::MortarContactPair pair(model, definition);
+    fixtures::set_vertex_displacements(model,
+                                       u,
+                                       [&](const types::material_id id,
+                                           const Point<3>          &X) {
+                                         return 2e-3 *
+                                                wobble(X, id == 1 ? 0. : 1.);
+                                       });
+    compare("5. tied", pair, 0.);
+  }
+  return 0;
+}
