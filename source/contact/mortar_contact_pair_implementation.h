@@ -158,15 +158,23 @@ namespace rubberdyn
        * friction state and the candidates fixed). With Sacado numbers in
        * @p y the forces carry their derivatives (the tangent). Returns
        * false (and leaves @p force alone) if the node carries no traction.
+       *
+       * @p overlaps: the pairs (gap facet index, master facet) whose
+       * segments count. With @p record, all candidate pairs are tried and
+       * @p overlaps becomes those that gave a segment (a first evaluation
+       * in doubles); without, only those are integrated (the evaluation
+       * with derivatives, on a patch reduced to their nodes).
        */
       template <typename Number>
       bool
-      node_forces(const Pass                          &pass,
-                  const unsigned int                   k,
-                  const std::vector<unsigned int>     &patch,
-                  const std::vector<Point<3, Number>> &y,
-                  const double                         time,
-                  std::vector<Tensor<1, 3, Number>>   &force) const;
+      node_forces(const Pass                               &pass,
+                  const unsigned int                        k,
+                  const std::vector<unsigned int>          &patch,
+                  const std::vector<Point<3, Number>>      &y,
+                  const double                              time,
+                  std::vector<Tensor<1, 3, Number>>        &force,
+                  std::vector<std::array<unsigned int, 2>> &overlaps,
+                  const bool                                record) const;
 
       /**
        * Add the tangent blocks of @p pass at the current positions: one

@@ -88,12 +88,14 @@ namespace rubberdyn
     template <typename Number>
     bool
     MortarContactPair::Implementation::node_forces(
-      const Pass                          &pass,
-      const unsigned int                   k,
-      const std::vector<unsigned int>     &patch,
-      const std::vector<Point<3, Number>> &y,
-      const double                         time,
-      std::vector<Tensor<1, 3, Number>>   &force) const
+      const Pass                               &pass,
+      const unsigned int                        k,
+      const std::vector<unsigned int>          &patch,
+      const std::vector<Point<3, Number>>      &y,
+      const double                              time,
+      std::vector<Tensor<1, 3, Number>>        &force,
+      std::vector<std::array<unsigned int, 2>> &overlaps,
+      const bool                                record) const
     {
       using Vector            = Tensor<1, 3, Number>;
       const unsigned int node = pass.nodes[k];
@@ -144,64 +146,83 @@ namespace rubberdyn
           A = pass.tied_area[node];
         }
       else
-        for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1]; ++j)
-          {
-            const unsigned int     i  = pass.node_gap_facets[j];
-            const unsigned int     f  = pass.gap_facets[i];
-            const unsigned int     a  = corner_of(f);
-            const auto            &sn = facet_nodes[f];
-            FacetCornersOf<Number> slave_corners, master_corners;
-            for (unsigned int b = 0; b < 4; ++b)
-              slave_corners[b] = y[at(sn[b])];
-            Tensor<1, 3> facet_normal;
+        {
+          // The pairs of a gap facet around the node and a master facet to
+          // integrate: all candidates, or those of @p overlaps.
+          if (record)
             {
-              const Vector n =
-                cross_product_3d(slave_corners[2] - slave_corners[0],
-                                 slave_corners[3] - slave_corners[1]);
-              for (unsigned int d = 0; d < 3; ++d)
-                facet_normal[d] = value_of(n[d]);
-              facet_normal /= facet_normal.norm();
+              overlaps.clear();
+              for (unsigned int j = pass.gap_start[k];
+                   j < pass.gap_start[k + 1];
+                   ++j)
+                for (const unsigned int m :
+                     pass.candidates[pass.node_gap_facets[j]])
+                  overlaps.push_back({pass.node_gap_facets[j], m});
             }
-            MortarSegmentOf<Number> segment;
-            for (const unsigned int m : pass.candidates[i])
-              {
-                const auto &mn = facet_nodes[m];
-                for (unsigned int b = 0; b < 4; ++b)
+          std::vector<std::array<unsigned int, 2>> kept;
+          FacetCornersOf<Number>  slave_corners, master_corners;
+          MortarSegmentOf<Number> segment;
+          for (const auto &[i, m] : overlaps)
+            {
+              const unsigned int f  = pass.gap_facets[i];
+              const unsigned int a  = corner_of(f);
+              const auto        &sn = facet_nodes[f];
+              const auto        &mn = facet_nodes[m];
+              for (unsigned int b = 0; b < 4; ++b)
+                {
+                  slave_corners[b]  = y[at(sn[b])];
                   master_corners[b] = y[at(mn[b])];
-                if (!integrate_mortar_segment(slave_corners,
-                                              master_corners,
-                                              segment))
-                  continue;
-                // The same cut as add_forces(): farther apart than the
-                // margin is not the contact's.
-                Tensor<1, 3> total;
-                for (unsigned int c = 0; c < 4; ++c)
-                  for (unsigned int b = 0; b < 4; ++b)
-                    for (unsigned int d = 0; d < 3; ++d)
-                      total[d] += value_of(segment.D[c][b]) *
-                                    value_of(slave_corners[b][d]) -
-                                  value_of(segment.M[c][b]) *
-                                    value_of(master_corners[b][d]);
-                if (std::abs(facet_normal * total) >
-                    margin * value_of(segment.area))
-                  continue;
-                SegmentRow<Number> row{f, m, {}, {}};
-                for (unsigned int b = 0; b < 4; ++b)
-                  {
-                    row.D[b] = segment.D[a][b];
-                    row.M[b] = segment.M[a][b];
-                    A += row.D[b];
-                    gap += row.D[b] * slave_corners[b] -
-                           row.M[b] * master_corners[b];
-                    if (coulomb)
-                      slip +=
-                        row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
-                        row.M[b] * minus(master_corners[b], x_accepted[mn[b]]);
-                  }
-                if (owns(pass, i))
-                  rows.push_back(row);
-              }
-          }
+                }
+              // The values: the whole segment, for the same cut as
+              // add_forces() (farther apart than the margin is not the
+              // contact's). The derivatives: the node's row only, of the
+              // segments that passed.
+              if (!integrate_mortar_segment(slave_corners,
+                                            master_corners,
+                                            segment,
+                                            record ? 4 : a))
+                continue;
+              if (record)
+                {
+                  Tensor<1, 3> facet_normal, total;
+                  const Vector n =
+                    cross_product_3d(slave_corners[2] - slave_corners[0],
+                                     slave_corners[3] - slave_corners[1]);
+                  for (unsigned int d = 0; d < 3; ++d)
+                    facet_normal[d] = value_of(n[d]);
+                  facet_normal /= facet_normal.norm();
+                  for (unsigned int c = 0; c < 4; ++c)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      for (unsigned int d = 0; d < 3; ++d)
+                        total[d] += value_of(segment.D[c][b]) *
+                                      value_of(slave_corners[b][d]) -
+                                    value_of(segment.M[c][b]) *
+                                      value_of(master_corners[b][d]);
+                  if (std::abs(facet_normal * total) >
+                      margin * value_of(segment.area))
+                    continue;
+                }
+              if (record)
+                kept.push_back({i, m});
+              SegmentRow<Number> row{f, m, {}, {}};
+              for (unsigned int b = 0; b < 4; ++b)
+                {
+                  row.D[b] = segment.D[a][b];
+                  row.M[b] = segment.M[a][b];
+                  A += row.D[b];
+                  gap +=
+                    row.D[b] * slave_corners[b] - row.M[b] * master_corners[b];
+                  if (coulomb)
+                    slip +=
+                      row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
+                      row.M[b] * minus(master_corners[b], x_accepted[mn[b]]);
+                }
+              if (owns(pass, i))
+                rows.push_back(row);
+            }
+          if (record)
+            overlaps = kept;
+        }
       if (rows.empty() || !(value_of(A) > 0.))
         return false;
 
@@ -272,13 +293,17 @@ namespace rubberdyn
       const double                                  time,
       const model::ForceContribution::TangentBlock &add) const
     {
-      std::vector<unsigned int>            patch;
-      std::vector<Point<3>>                y;
-      std::vector<Tensor<1, 3>>            force;
-      std::vector<Point<3, ADNumber>>      y_ad;
-      std::vector<Tensor<1, 3, ADNumber>>  force_ad;
-      std::vector<types::global_dof_index> dofs;
-      std::vector<double>                  K;
+      std::vector<unsigned int>                patch;
+      std::vector<Point<3>>                    y;
+      std::vector<Tensor<1, 3>>                force;
+      std::vector<Point<3, ADNumber>>          y_ad;
+      std::vector<Tensor<1, 3, ADNumber>>      force_ad;
+      std::vector<types::global_dof_index>     dofs;
+      std::vector<double>                      K;
+      std::vector<std::array<unsigned int, 2>> overlaps;
+      // (Tied pairs integrate their stored segments, not candidates.)
+      const bool tied =
+        definition.type == model::ContactPairDefinition::Type::tied;
       for (unsigned int k = 0; k < pass.nodes.size(); ++k)
         {
           // Only a node with a facet of this rank carries forces here.
@@ -295,20 +320,43 @@ namespace rubberdyn
           for (unsigned int j = 0; j < n_nodes; ++j)
             y[j] = x[patch[j]];
           force.assign(n_nodes, Tensor<1, 3>());
-          if (!node_forces(pass, k, patch, y, time, force))
+          if (!node_forces(pass, k, patch, y, time, force, overlaps, true))
             continue;
 
-          const unsigned int n = 3 * n_nodes;
-          y_ad.resize(n_nodes);
-          for (unsigned int j = 0; j < n_nodes; ++j)
+          // The derivatives on the nodes that count: those of the node's
+          // slave facets and of the master facets they overlap (a third
+          // of the candidates' in the patch test; tied pairs have their
+          // segments' already).
+          if (!tied)
+            patch.clear();
+          for (unsigned int j = pass.facet_start[k];
+               j < pass.facet_start[k + 1];
+               ++j)
+            for (const unsigned int node : facet_nodes[pass.node_facets[j]])
+              patch.push_back(node);
+          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
+               ++j)
+            for (const unsigned int node :
+                 facet_nodes[pass.gap_facets[pass.node_gap_facets[j]]])
+              patch.push_back(node);
+          if (!tied)
+            for (const auto &overlap : overlaps)
+              for (const unsigned int node : facet_nodes[overlap[1]])
+                patch.push_back(node);
+          std::sort(patch.begin(), patch.end());
+          patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+          const unsigned int n_patch = patch.size();
+          const unsigned int n       = 3 * n_patch;
+          y_ad.resize(n_patch);
+          for (unsigned int j = 0; j < n_patch; ++j)
             for (unsigned int d = 0; d < 3; ++d)
               y_ad[j][d] = ADNumber(n, 3 * j + d, x[patch[j]][d]);
-          force_ad.assign(n_nodes, Tensor<1, 3, ADNumber>());
-          node_forces(pass, k, patch, y_ad, time, force_ad);
+          force_ad.assign(n_patch, Tensor<1, 3, ADNumber>());
+          node_forces(pass, k, patch, y_ad, time, force_ad, overlaps, false);
           // The resisting force is minus the force on the solid.
           dofs.resize(n);
           K.assign(n * n, 0.);
-          for (unsigned int i = 0; i < n_nodes; ++i)
+          for (unsigned int i = 0; i < n_patch; ++i)
             for (unsigned int d = 0; d < 3; ++d)
               {
                 dofs[3 * i + d]   = node_global_dofs[patch[i]][d];

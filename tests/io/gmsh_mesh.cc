@@ -558,11 +558,25 @@ main()
                {6, 2. * 10. * 5.},
                {7, 2. * 10. * 5.},
                {8, 2. * 10. * 5.}});
+    // The block on the slope: built in the slope's frame (its volumes and
+    // faces keep their areas when turned).
+    Triangulation<3> slope;
+    read_good(slope, mesh_directory + "block_on_slope.msh");
+    summarize(slope,
+              "block_on_slope.msh",
+              {{1, 14. * 10. * 5.}, {2, 10. * 10. * 5.}},
+              {{1, 140.},
+               {2, 140.},
+               {3, 100.},
+               {4, 100.},
+               {5, 50.},
+               {6, 2. * (14. + 10.) * 5. + 3. * 10. * 5.}});
     const unsigned int shared = n_shared_vertices(bars) +
                                 n_shared_vertices(block) +
                                 n_shared_vertices(blocks) +
                                 n_shared_vertices(tied) +
-                                n_shared_vertices(stacked);
+                                n_shared_vertices(stacked) +
+                                n_shared_vertices(slope);
     out() << "  shared vertices between their bodies: " << shared
           << std::endl;
     check(shared == 0, "the contact examples' bodies have their own nodes");

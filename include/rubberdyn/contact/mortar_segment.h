@@ -64,6 +64,9 @@ namespace rubberdyn
      * against the slave's); a master facet seen from behind, or no overlap,
      * gives false and leaves @p segment undefined.
      *
+     * With @p row < 4 only that row of D and M is integrated (the others
+     * are zero): all a slave node's forces need, a quarter of the work.
+     *
      * Instantiated for double and for Sacado's forward-mode number
      * Sacado::Fad::DFad<double> (the contact tangent differentiates the
      * integrals with respect to the corners: the clipping and the inverse
@@ -74,7 +77,8 @@ namespace rubberdyn
     bool
     integrate_mortar_segment(const FacetCornersOf<Number> &slave,
                              const FacetCornersOf<Number> &master,
-                             MortarSegmentOf<Number>      &segment);
+                             MortarSegmentOf<Number>      &segment,
+                             const unsigned int row = 4);
 
     /** The facet's shape functions at (xi, eta) (FacetCorners). */
     template <typename Number>
