@@ -617,6 +617,28 @@ main()
                {2, 2. * std::sqrt(2.) * r * r},
                {3, 2. * std::sqrt(2.) * r * r}});
     compare_with_built_in_cylinder(tria);
+
+    // The same cylinder between two plates 40 x 40 x 5 mm, with nodes of
+    // their own.
+    Triangulation<3> plates;
+    read_good(plates, mesh_directory + "drop_test_plates.msh");
+    summarize(plates,
+              "drop_test_plates.msh",
+              {{1, 2. * std::sqrt(2.) * r * r * h},
+               {2, 40. * 40. * 5.},
+               {3, 40. * 40. * 5.}},
+              {{1, 8. * 2. * r * std::sin(pi / 8.) * h},
+               {2, 2. * std::sqrt(2.) * r * r},
+               {3, 2. * std::sqrt(2.) * r * r},
+               {4, 1600.},
+               {5, 1600.},
+               {6, 1600.},
+               {7, 1600.},
+               {8, 2. * 4. * 40. * 5.}});
+    out() << "  shared vertices between the cylinder and the plates: "
+          << n_shared_vertices(plates) << std::endl;
+    check(n_shared_vertices(plates) == 0,
+          "the cylinder and the plates have their own nodes");
   }
   {
     // Two cubes touching at a corner, with distinct nodes there: the
