@@ -863,6 +863,68 @@ namespace rubberdyn
 
 
 
+    std::vector<double>
+    MortarContactPair::friction_state() const
+    {
+      const Implementation &I = *impl;
+      std::vector<double>   state;
+      if (!I.coulomb)
+        return state;
+      for (const Implementation::Pass &pass : I.passes)
+        {
+          for (const Tensor<1, 3> &t : pass.accepted_tangential)
+            state.insert(state.end(), {t[0], t[1], t[2]});
+          state.insert(state.end(),
+                       pass.accepted_spring_energy.begin(),
+                       pass.accepted_spring_energy.end());
+          state.insert(state.end(),
+                       pass.accepted_slip_distance.begin(),
+                       pass.accepted_slip_distance.end());
+        }
+      for (const Point<3> &x : I.x_accepted)
+        state.insert(state.end(), {x[0], x[1], x[2]});
+      return state;
+    }
+
+
+
+    void
+    MortarContactPair::set_friction_state(const std::vector<double> &state,
+                                          const double               time)
+    {
+      Implementation &I = *impl;
+      const std::size_t n = I.x.size();
+      AssertThrow(state.size() ==
+                    (I.coulomb ? (5 * I.passes.size() + 3) * n : 0),
+                  ExcMessage("The friction state of the contact pair '" +
+                             I.definition.name + "' does not fit it"));
+      if (!I.coulomb)
+        return;
+      const double *value = state.data();
+      for (Implementation::Pass &pass : I.passes)
+        {
+          for (Tensor<1, 3> &t : pass.accepted_tangential)
+            for (unsigned int d = 0; d < 3; ++d)
+              t[d] = *value++;
+          for (double &energy : pass.accepted_spring_energy)
+            energy = *value++;
+          for (double &distance : pass.accepted_slip_distance)
+            distance = *value++;
+          pass.trial_tangential       = pass.accepted_tangential;
+          pass.trial_spring_energy    = pass.accepted_spring_energy;
+          pass.trial_slip_distance    = pass.accepted_slip_distance;
+        }
+      for (Point<3> &x : I.x_accepted)
+        for (unsigned int d = 0; d < 3; ++d)
+          x[d] = *value++;
+      I.time_accepted          = time;
+      I.accepted_friction_work = 0.;
+      I.trial_dissipation      = 0.;
+      I.trial_pending          = false;
+    }
+
+
+
     void
     MortarContactPair::load(std::istream &in)
     {

@@ -647,7 +647,8 @@ namespace rubberdyn
     {
       AssertThrow(state.history.size() == elements->history().size() &&
                     state.shortenings.size() == elements->n_sections() &&
-                    state.contact_states.size() == contacts.size(),
+                    state.contact_states.size() ==
+                      contacts.size() + contact_pairs.size(),
                   ExcMessage("The preload does not fit the elements"));
       elements->history() = state.history;
       elements->set_section_shortenings(state.shortenings);
@@ -660,6 +661,11 @@ namespace rubberdyn
                       ExcMessage("The preload does not fit the contacts"));
           contacts[c]->state() = state.contact_states[c];
         }
+      // The mortar pairs' friction states, accepted at the explicit run's
+      // start (t = 0).
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+        contact_pairs[p]->set_friction_state(
+          state.contact_states[contacts.size() + p], 0.);
       // The rigid parts the load path moved, at rest. The load path turns
       // them about the same centre of mass c as this run's C (up to
       // round-off): x = c + d + R (X - c) = C + d' + R (X - C) for
@@ -703,6 +709,8 @@ namespace rubberdyn
       std::vector<std::size_t> contact_state_sizes;
       for (const auto &contact : contacts)
         contact_state_sizes.push_back(contact->state().size());
+      for (const auto &pair : contact_pairs)
+        contact_state_sizes.push_back(pair->friction_state().size());
       return model::read_preload(directory,
                                  parameters,
                                  model.partitioner,

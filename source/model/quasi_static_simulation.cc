@@ -352,6 +352,9 @@ namespace rubberdyn
       state.time           = newton->time();
       for (const auto &contact : contacts)
         state.contact_states.push_back(contact->state());
+      // Then the mortar pairs' friction states (empty: frictionless, tied).
+      for (const auto &pair : contact_pairs)
+        state.contact_states.push_back(pair->friction_state());
       for (unsigned int k = 0; k < equilibrium_parts.size(); ++k)
         {
           const RigidBody &pose = newton->rigid_part_poses()[k];

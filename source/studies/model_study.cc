@@ -926,7 +926,7 @@ namespace rubberdyn
       prm.leave_subsection();
 
       parse_pretension_sections(prm, time_integration, m);
-      parse_contact_pairs(prm, time_integration, require_boundary_ids, m);
+      parse_contact_pairs(prm, require_boundary_ids, m);
 
       m.setup();
       if (time_integration.scheme == "quasi-static then explicit")

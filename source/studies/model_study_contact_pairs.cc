@@ -3,7 +3,6 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/parameters/time_integration_parameters.h>
 
 #include <algorithm>
 #include <iterator>
@@ -31,7 +30,8 @@ namespace rubberdyn
           "separated by commas; each has a subsection of its name. A pair "
           "is segment-to-segment mortar contact (Puso & Laursen 2004; "
           "doc/contact.md) of the slave faces against the master faces, "
-          "explicit scheme. The time history gets <name>_normal_force, "
+          "in the explicit and the quasi-static scheme (with its exact "
+          "tangent). The time history gets <name>_normal_force, "
           "<name>_tangential_force, <name>_force_x/_y/_z (kN, on the slave "
           "side), <name>_max_pressure, <name>_min_pressure (GPa), "
           "<name>_contact_area (mm^2), <name>_max_penetration (mm), "
@@ -101,8 +101,7 @@ namespace rubberdyn
 
 
       void
-      parse_contact_pairs(ParameterHandler                  &prm,
-                          const parameters::TimeIntegration &time,
+      parse_contact_pairs(ParameterHandler      &prm,
                           const BoundaryIdCheck &require_boundary_ids,
                           model::Model          &m)
       {
@@ -158,16 +157,6 @@ namespace rubberdyn
                                               path + "/Penalty scale");
             pair.two_pass      = prm.get_bool("Two-pass");
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
-            // (The friction state of a Coulomb pair does not pass from
-            // the load path to the explicit run yet.)
-            if (time.scheme == "quasi-static then explicit" &&
-                pair.type == model::ContactPairDefinition::Type::coulomb)
-              throw InputError("Time integration/Scheme",
-                               "the Coulomb contact pair '" + name +
-                                 "' cannot hand its friction state from the "
-                                 "quasi-static load path to the explicit run "
-                                 "yet: run 'quasi-static' or 'explicit', or "
-                                 "make the pair frictionless or tied");
             std::vector<types::boundary_id> shared;
             std::set_intersection(pair.slave_boundary_ids.begin(),
                                   pair.slave_boundary_ids.end(),

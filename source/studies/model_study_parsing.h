@@ -23,11 +23,6 @@ namespace rubberdyn
   {
     class Model;
   }
-  namespace parameters
-  {
-    struct TimeIntegration;
-  }
-
   namespace studies
   {
     namespace model_study_parsing
@@ -108,12 +103,11 @@ namespace rubberdyn
        * @throws InputError naming the pair's entry: a boundary id absent
        *   from the mesh (through @p require_boundary_ids), a negative
        *   friction coefficient or decay, FD > FS, slave and master ids that
-       *   overlap without being the same, a quasi-static scheme, or a slave
-       *   surface of two pairs with different types.
+       *   overlap without being the same, or a slave surface of two pairs
+       *   with different types.
        */
       void
-      parse_contact_pairs(ParameterHandler                  &prm,
-                          const parameters::TimeIntegration &time,
+      parse_contact_pairs(ParameterHandler      &prm,
                           const BoundaryIdCheck &require_boundary_ids,
                           model::Model          &m);
     } // namespace model_study_parsing

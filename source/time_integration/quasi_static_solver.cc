@@ -1540,9 +1540,14 @@ namespace rubberdyn
                     << std::endl;
               const bool residual_ok = r.free_norm <= s.residual_floor ||
                                        ratio <= s.residual_tolerance;
+              // (In a step in which nothing changes, e.g. a held load with
+              // friction, even the first iteration's energy is round-off:
+              // an increment at the round-off of the strain energy is
+              // converged as well.)
               const bool energy_ok =
                 r.free_norm <= s.residual_floor ||
-                energy_increment <= s.energy_tolerance * first_energy;
+                energy_increment <= s.energy_tolerance * first_energy ||
+                energy_increment <= 1e-15 * std::abs(r.energy);
               if (!predictor && residual_ok && energy_ok)
                 {
                   converged = true;

@@ -215,6 +215,29 @@ namespace rubberdyn
       load(std::istream &in) override;
 
       /**
+       * The accepted friction state for the hand-off from the quasi-static
+       * load path to the explicit run (Scheme = quasi-static then
+       * explicit): per pass the tangential tractions (GPa), their springs'
+       * energies (J) and the distances slipped (mm) of every node, then
+       * the nodes' accepted positions (mm). Empty for frictionless and
+       * tied pairs (they have no state). The same on every rank.
+       */
+      std::vector<double>
+      friction_state() const;
+
+      /**
+       * Take the state @p state of friction_state() of the same pair on the
+       * same mesh, accepted at the time @p time (the explicit run's start:
+       * the first step's slip rate is measured from it). The friction work
+       * starts from zero: the explicit run's energy balance starts at the
+       * hand-off.
+       *
+       * @throws ExcMessage if @p state does not fit the pair.
+       */
+      void
+      set_friction_state(const std::vector<double> &state, const double time);
+
+      /**
        * Add the pair's ParaView fields at the last evaluation into
        * @p fields (owned entries of the Q1^3 dofs, as
        * postprocess::NodalScalars): at each slave node, into

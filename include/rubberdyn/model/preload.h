@@ -56,7 +56,9 @@ namespace rubberdyn
       /**
        * The accepted friction state of each rigid surface's contact
        * (contact::RigidSurfaceContact::state(): tangential forces and
-       * reference points of this rank's nodes).
+       * reference points of this rank's nodes), then of each mortar contact
+       * pair (contact::MortarContactPair::friction_state(): empty for
+       * frictionless and tied pairs).
        */
       std::vector<std::vector<double>> contact_states;
       /** The rigid parts in equilibrium (Quasi-static motion). */
