@@ -67,3 +67,49 @@ crash_and_restart() {
   grep -q "Restarted from the checkpoint at t = $5" "$3.log" ||
     { echo "no restart from $5 ms:"; cat "$3.log"; return 1; }
 }
+
+# handoff_at_rest CSV FORCE_COLUMN ENERGY_BOUND WORK_BOUND: the explicit run
+# of a hand-off (Scheme = quasi-static then explicit, output directory
+# handoff) starts at rest in the preload's equilibrium: over CSV, kinetic /
+# internal energy <= 1e-12, |energy_error| <= ENERGY_BOUND, FORCE_COLUMN
+# equal to its last value in handoff/preload/time_history.csv to 1e-10
+# relative, |friction_work| <= WORK_BOUND (J); at least 10 rows.
+handoff_at_rest() {
+  local preload
+  preload=$(awk -F, -v column="$2" '
+    NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    { f = $c[column] } END { printf "%.17g", f }' handoff/preload/time_history.csv)
+  awk -F, -v preload="$preload" -v column="$2" -v energy_bound="$3" \
+      -v work_bound="$4" '
+    function abs(x) { return x < 0 ? -x : x }
+    NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    {
+      k = $c["kinetic_energy"] / $c["internal_energy"]; if (k > ke) ke = k
+      e = abs($c["energy_error"]); if (e > err) err = e
+      d = abs($c[column] / preload - 1); if (d > drift) drift = d
+      w = abs($c["friction_work"]); if (w > work) work = w
+      ++rows
+    }
+    END {
+      printf "%d rows: kinetic / internal energy %.2e, energy error %.2e, %s vs the preload %.2e, friction work %.2e J\n", rows, ke, err, column, drift, work
+      exit (rows < 10 || ke > 1e-12 || err > energy_bound || drift > 1e-10 || work > work_bound)
+    }' "$1"
+}
+
+# restart_from_preload PRM CHECK...: run PRM (written by the caller to
+# restart from the preload checkpoint of handoff/, with another End time)
+# and require that it skips the load path and starts from the same state:
+# the command CHECK... passes on its time history, and its first row
+# equals the one of the run before (saved by the caller in first_row).
+restart_from_preload() {
+  local prm=$1; shift
+  run_prm "$prm" restart_log.txt
+  grep -q "Starting from the preload" restart_log.txt
+  if grep -q "Step to" restart_log.txt; then
+    echo "the restart ran the load path again"; return 1
+  fi
+  "$@"
+  [ "$(sed -n 2p handoff/time_history.csv | cut -d, -f3-)" = "$first_row" ] ||
+    { echo "the restart starts from another state"; return 1; }
+  echo "the restart starts from the same state"
+}
