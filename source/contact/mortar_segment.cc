@@ -99,6 +99,45 @@ namespace rubberdyn
       }
 
       /**
+       * One Newton step towards the (xi, eta) at which the bilinear map of
+       * the plane points @p corner reaches @p q, from (@p xi_0, @p eta_0):
+       * the residual F = x(xi_0, eta_0) - q in the numbers of the corners
+       * (with their derivatives), the Jacobian in their values. Returns
+       * |F| (of the values).
+       */
+      template <typename Number>
+      double
+      newton_step(const PlanePoint<Number> (&corner)[4],
+                  const PlanePoint<Number> &q,
+                  const double              xi_0,
+                  const double              eta_0,
+                  Number                   &xi,
+                  Number                   &eta)
+      {
+        Number fx = -q.x, fy = -q.y;
+        double j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
+        for (unsigned int a = 0; a < 4; ++a)
+          {
+            const double N =
+              0.25 * (1. + corner_xi[a] * xi_0) * (1. + corner_eta[a] * eta_0);
+            const double dxi =
+              0.25 * corner_xi[a] * (1. + corner_eta[a] * eta_0);
+            const double deta =
+              0.25 * corner_eta[a] * (1. + corner_xi[a] * xi_0);
+            fx += N * corner[a].x;
+            fy += N * corner[a].y;
+            j00 += dxi * value_of(corner[a].x);
+            j01 += deta * value_of(corner[a].x);
+            j10 += dxi * value_of(corner[a].y);
+            j11 += deta * value_of(corner[a].y);
+          }
+        const double det = j00 * j11 - j01 * j10;
+        xi               = xi_0 - (j11 * fx - j01 * fy) / det;
+        eta              = eta_0 - (-j10 * fx + j00 * fy) / det;
+        return std::abs(value_of(fx)) + std::abs(value_of(fy));
+      }
+
+      /**
        * The (xi, eta) at which the bilinear map of the plane points
        * @p corner reaches @p q (Newton's method from the centre).
        */
@@ -113,27 +152,11 @@ namespace rubberdyn
         eta = 0.;
         for (unsigned int iteration = 0; iteration < 30; ++iteration)
           {
-            double fx = -q.x, fy = -q.y, j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
-            for (unsigned int a = 0; a < 4; ++a)
-              {
-                const double N =
-                  0.25 * (1. + corner_xi[a] * xi) * (1. + corner_eta[a] * eta);
-                const double dxi =
-                  0.25 * corner_xi[a] * (1. + corner_eta[a] * eta);
-                const double deta =
-                  0.25 * corner_eta[a] * (1. + corner_xi[a] * xi);
-                fx += N * corner[a].x;
-                fy += N * corner[a].y;
-                j00 += dxi * corner[a].x;
-                j01 += deta * corner[a].x;
-                j10 += dxi * corner[a].y;
-                j11 += deta * corner[a].y;
-              }
-            if (std::abs(fx) + std::abs(fy) < tolerance)
+            double next_xi, next_eta;
+            if (newton_step(corner, q, xi, eta, next_xi, next_eta) < tolerance)
               return;
-            const double det = j00 * j11 - j01 * j10;
-            xi -= (j11 * fx - j01 * fy) / det;
-            eta -= (-j10 * fx + j00 * fy) / det;
+            xi  = next_xi;
+            eta = next_eta;
           }
       }
 
@@ -160,26 +183,7 @@ namespace rubberdyn
                          tolerance,
                          xi_0,
                          eta_0);
-        ADNumber fx = -q.x, fy = -q.y;
-        double   j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
-        for (unsigned int a = 0; a < 4; ++a)
-          {
-            const double N =
-              0.25 * (1. + corner_xi[a] * xi_0) * (1. + corner_eta[a] * eta_0);
-            const double dxi =
-              0.25 * corner_xi[a] * (1. + corner_eta[a] * eta_0);
-            const double deta =
-              0.25 * corner_eta[a] * (1. + corner_xi[a] * xi_0);
-            fx += N * corner[a].x;
-            fy += N * corner[a].y;
-            j00 += dxi * corner_value[a].x;
-            j01 += deta * corner_value[a].x;
-            j10 += dxi * corner_value[a].y;
-            j11 += deta * corner_value[a].y;
-          }
-        const double det = j00 * j11 - j01 * j10;
-        xi               = xi_0 - (j11 * fx - j01 * fy) / det;
-        eta              = eta_0 - (-j10 * fx + j00 * fy) / det;
+        newton_step(corner, q, xi_0, eta_0, xi, eta);
       }
 
       /** Dunavant's 7-point rule: barycentric points, weights (sum 1). */
