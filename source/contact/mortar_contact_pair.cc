@@ -8,8 +8,6 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/model.h>
 
-#include "mortar_contact_pair_implementation.h"
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -17,6 +15,8 @@
 #include <iterator>
 #include <map>
 #include <tuple>
+
+#include "mortar_contact_pair_implementation.h"
 
 namespace rubberdyn
 {
@@ -113,9 +113,9 @@ namespace rubberdyn
             if (inserted)
               {
                 node_dofs.push_back({});
-                node_global_dofs.push_back({facets[f].dofs[c][0],
-                                            facets[f].dofs[c][1],
-                                            facets[f].dofs[c][2]});
+                node_global_dofs.push_back({{facets[f].dofs[c][0],
+                                             facets[f].dofs[c][1],
+                                             facets[f].dofs[c][2]}});
                 node_reference.emplace_back(facets[f].X[c][0],
                                             facets[f].X[c][1],
                                             facets[f].X[c][2]);
@@ -383,18 +383,34 @@ namespace rubberdyn
     void
     MortarContactPair::Implementation::compute_normals(const Pass &pass)
     {
-      for (unsigned int i = 0; i < pass.nodes.size(); ++i)
+      const auto position =
+        [this](const unsigned int node) -> const Point<3> & { return x[node]; };
+      for (unsigned int k = 0; k < pass.nodes.size(); ++k)
+        normal[pass.nodes[k]] = nodal_normal<double>(pass, k, position);
+    }
+
+
+
+    bool
+    MortarContactPair::Implementation::within_margin(
+      const FacetCorners  &slave,
+      const FacetCorners  &master,
+      const MortarSegment &segment,
+      Tensor<1, 3> (&weighted)[4]) const
+    {
+      Tensor<1, 3> facet_normal =
+        cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
+      facet_normal /= facet_normal.norm();
+      Tensor<1, 3> total;
+      for (unsigned int a = 0; a < 4; ++a)
         {
-          Tensor<1, 3> n;
-          for (unsigned int j = pass.facet_start[i];
-               j < pass.facet_start[i + 1];
-               ++j)
-            {
-              const auto &c = facet_nodes[pass.node_facets[j]];
-              n += cross_product_3d(x[c[2]] - x[c[0]], x[c[3]] - x[c[1]]);
-            }
-          normal[pass.nodes[i]] = n / n.norm();
+          weighted[a] = Tensor<1, 3>();
+          for (unsigned int b = 0; b < 4; ++b)
+            weighted[a] +=
+              segment.D[a][b] * slave[b] - segment.M[a][b] * master[b];
+          total += weighted[a];
         }
+      return !(std::abs(facet_normal * total) > margin * segment.area);
     }
 
 
@@ -419,10 +435,6 @@ namespace rubberdyn
           const auto &s = facet_nodes[pass.gap_facets[i]];
           for (unsigned int a = 0; a < 4; ++a)
             slave_corners[a] = x[s[a]];
-          Tensor<1, 3> facet_normal =
-            cross_product_3d(slave_corners[2] - slave_corners[0],
-                             slave_corners[3] - slave_corners[1]);
-          facet_normal /= facet_normal.norm();
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
@@ -430,21 +442,11 @@ namespace rubberdyn
                 master_corners[k] = x[mc[k]];
               if (!integrate_mortar_segment(slave_corners,
                                             master_corners,
-                                            segment))
-                continue;
-              Tensor<1, 3> total;
-              for (unsigned int a = 0; a < 4; ++a)
-                {
-                  weighted[a] = Tensor<1, 3>();
-                  for (unsigned int b = 0; b < 4; ++b)
-                    weighted[a] += segment.D[a][b] * slave_corners[b] -
-                                   segment.M[a][b] * master_corners[b];
-                  total += weighted[a];
-                }
-              // Farther apart than the margin (which covers the tie
-              // tolerance) is not the contact's (the back of a thin part, a
-              // fold): left out whatever the search found.
-              if (std::abs(facet_normal * total) > margin * segment.area)
+                                            segment) ||
+                  !within_margin(slave_corners,
+                                 master_corners,
+                                 segment,
+                                 weighted))
                 continue;
               for (unsigned int a = 0; a < 4; ++a)
                 {
@@ -672,31 +674,21 @@ namespace rubberdyn
                   bool         slipping = false;
                   if (I.coulomb)
                     {
-                      // Return mapping on the weighted slip (Puso & Laursen
-                      // 2004, sect. 5): the accepted traction turned into
-                      // the current tangent plane, its magnitude kept, then
-                      // the elastic trial and the Coulomb cone.
-                      const Tensor<1, 3> &accepted =
-                        pass.accepted_tangential[node];
-                      Tensor<1, 3> old = accepted - (accepted * n) * n;
-                      if (old.norm() > 0.)
-                        old *= accepted.norm() / old.norm();
-                      Tensor<1, 3> increment = I.slip[node] / A;
-                      increment -= (increment * n) * n;
-                      tangential = old - pass.penalty * increment;
-                      const double rate =
-                        step > 0. ? increment.norm() / step : 0.;
-                      const double mu =
-                        def.dynamic_friction +
-                        (def.static_friction - def.dynamic_friction) *
-                          std::exp(-def.decay * rate);
-                      const double limit = mu * p;
-                      if (tangential.norm() > limit)
-                        {
-                          tangential *= limit / tangential.norm();
-                          slipping = true;
-                          pass.trial_slip_distance[node] += increment.norm();
-                        }
+                      Tensor<1, 3> old, increment;
+                      tangential =
+                        coulomb_return_mapping(pass.accepted_tangential[node],
+                                               n,
+                                               I.slip[node],
+                                               A,
+                                               p,
+                                               pass.penalty,
+                                               step,
+                                               def,
+                                               old,
+                                               increment,
+                                               slipping);
+                      if (slipping)
+                        pass.trial_slip_distance[node] += increment.norm();
                       I.traction[node] += tangential;
                       pass.trial_tangential[node] = tangential;
                       const double spring =
@@ -892,7 +884,7 @@ namespace rubberdyn
     MortarContactPair::set_friction_state(const std::vector<double> &state,
                                           const double               time)
     {
-      Implementation &I = *impl;
+      Implementation   &I = *impl;
       const std::size_t n = I.x.size();
       AssertThrow(state.size() ==
                     (I.coulomb ? (5 * I.passes.size() + 3) * n : 0),
@@ -910,9 +902,9 @@ namespace rubberdyn
             energy = *value++;
           for (double &distance : pass.accepted_slip_distance)
             distance = *value++;
-          pass.trial_tangential       = pass.accepted_tangential;
-          pass.trial_spring_energy    = pass.accepted_spring_energy;
-          pass.trial_slip_distance    = pass.accepted_slip_distance;
+          pass.trial_tangential    = pass.accepted_tangential;
+          pass.trial_spring_energy = pass.accepted_spring_energy;
+          pass.trial_slip_distance = pass.accepted_slip_distance;
         }
       for (Point<3> &x : I.x_accepted)
         for (unsigned int d = 0; d < 3; ++d)

@@ -56,6 +56,55 @@ namespace rubberdyn
         unsigned int  slave, master;
         MortarSegment integrals;
       };
+
+      /**
+       * Coulomb's return mapping on the weighted slip (Puso & Laursen
+       * 2004, sect. 5), the one of add_forces() and of the tangent (with
+       * Sacado numbers): the @p accepted tangential traction (GPa) turned
+       * into the tangent plane of the unit normal @p n, its magnitude kept;
+       * the slip increment @p increment = weighted slip over the covered
+       * area, projected on the plane; the elastic trial old - eps
+       * increment; the cone mu p with LS-DYNA's mu(FS, FD, DC, rate), the
+       * rate |increment| / @p step. Returns the tangential traction, and
+       * @p old, @p increment and whether it slips.
+       */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      coulomb_return_mapping(const Tensor<1, 3>                 &accepted,
+                             const Tensor<1, 3, Number>         &n,
+                             const Tensor<1, 3, Number>         &weighted_slip,
+                             const Number                       &area,
+                             const Number                       &p,
+                             const double                        penalty,
+                             const double                        step,
+                             const model::ContactPairDefinition &def,
+                             Tensor<1, 3, Number>               &old,
+                             Tensor<1, 3, Number>               &increment,
+                             bool                               &slipping)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          old[d] = accepted[d];
+        old -= (old * n) * n;
+        // (The norms only where they are not zero: with Sacado numbers
+        // their derivative is undefined there.)
+        if (old.norm() > 0.)
+          old *= Number(accepted.norm() / old.norm());
+        increment = weighted_slip / area;
+        increment -= (increment * n) * n;
+        Tensor<1, 3, Number> tangential = old - penalty * increment;
+        Number               rate       = 0.;
+        if (step > 0. && increment.norm() > 0.)
+          rate = increment.norm() / step;
+        using std::exp;
+        const Number mu =
+          def.dynamic_friction +
+          (def.static_friction - def.dynamic_friction) * exp(-def.decay * rate);
+        const Number limit = mu * p;
+        slipping           = tangential.norm() > limit;
+        if (slipping)
+          tangential *= Number(limit / tangential.norm());
+        return tangential;
+      }
     } // namespace mortar_internal
     using namespace mortar_internal;
 
@@ -132,6 +181,55 @@ namespace rubberdyn
       /** The nodal normals of @p pass's nodes at the current positions. */
       void
       compute_normals(const Pass &pass);
+
+      /**
+       * The unit normal at the @p k-th node of @p pass: the sum of its
+       * slave facets' diagonal cross products, normalised, with the
+       * positions @p position(node) (compute_normals(), and node_forces()
+       * with derivatives).
+       */
+      template <typename Number, typename Position>
+      Tensor<1, 3, Number>
+      nodal_normal(const Pass        &pass,
+                   const unsigned int k,
+                   const Position    &position) const
+      {
+        Tensor<1, 3, Number> n;
+        for (unsigned int j = pass.facet_start[k]; j < pass.facet_start[k + 1];
+             ++j)
+          {
+            const auto &c = facet_nodes[pass.node_facets[j]];
+            n += cross_product_3d(position(c[2]) - position(c[0]),
+                                  position(c[3]) - position(c[1]));
+          }
+        return n / n.norm();
+      }
+
+      /**
+       * Whether the segment of @p slave and @p master lies within the
+       * capture margin: its mean gap along the slave facet's normal,
+       * |n . sum_a weighted_a| / area, at most the margin (which covers the
+       * tie tolerance). Farther apart is not the contact's (the back of a
+       * thin part, a fold), whatever the search found. Also gives the
+       * segment's weighted gap vectors, @p weighted[a] = sum_b D_ab x_b -
+       * M_ab x^_b. The one cut of add_forces() and of the tangent.
+       */
+      bool
+      within_margin(const FacetCorners  &slave,
+                    const FacetCorners  &master,
+                    const MortarSegment &segment,
+                    Tensor<1, 3> (&weighted)[4]) const;
+
+      /** Whether a gap facet of this rank lies around the @p k-th node of
+       * @p pass (its forces then are partly this rank's). */
+      bool
+      has_own_facet(const Pass &pass, const unsigned int k) const
+      {
+        for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1]; ++j)
+          if (owns(pass, pass.node_gap_facets[j]))
+            return true;
+        return false;
+      }
 
       /** Whether this rank owns the @p i-th gap facet of @p pass. */
       bool

@@ -17,17 +17,6 @@ namespace rubberdyn
   {
     namespace
     {
-      /** A vector of numbers from one of doubles (a constant). */
-      template <typename Number>
-      Tensor<1, 3, Number>
-      constant(const Tensor<1, 3> &v)
-      {
-        Tensor<1, 3, Number> result;
-        for (unsigned int d = 0; d < 3; ++d)
-          result[d] = v[d];
-        return result;
-      }
-
       /** y - X for a point of numbers and one of doubles. */
       template <typename Number>
       Tensor<1, 3, Number>
@@ -148,7 +137,10 @@ namespace rubberdyn
       else
         {
           // The pairs of a gap facet around the node and a master facet to
-          // integrate: all candidates, or those of @p overlaps.
+          // integrate: all candidates, or those of @p overlaps (the cut
+          // is decided on doubles only).
+          Assert((!record || std::is_same<Number, double>::value),
+                 ExcInternalError());
           if (record)
             {
               overlaps.clear();
@@ -157,7 +149,7 @@ namespace rubberdyn
                    ++j)
                 for (const unsigned int m :
                      pass.candidates[pass.node_gap_facets[j]])
-                  overlaps.push_back({pass.node_gap_facets[j], m});
+                  overlaps.push_back({{pass.node_gap_facets[j], m}});
             }
           std::vector<std::array<unsigned int, 2>> kept;
           FacetCornersOf<Number>  slave_corners, master_corners;
@@ -174,36 +166,24 @@ namespace rubberdyn
                   master_corners[b] = y[at(mn[b])];
                 }
               // The values: the whole segment, for the same cut as
-              // add_forces() (farther apart than the margin is not the
-              // contact's). The derivatives: the node's row only, of the
+              // add_forces(). The derivatives: the node's row only, of the
               // segments that passed.
               if (!integrate_mortar_segment(slave_corners,
                                             master_corners,
                                             segment,
                                             record ? 4 : a))
                 continue;
-              if (record)
-                {
-                  Tensor<1, 3> facet_normal, total;
-                  const Vector n =
-                    cross_product_3d(slave_corners[2] - slave_corners[0],
-                                     slave_corners[3] - slave_corners[1]);
-                  for (unsigned int d = 0; d < 3; ++d)
-                    facet_normal[d] = value_of(n[d]);
-                  facet_normal /= facet_normal.norm();
-                  for (unsigned int c = 0; c < 4; ++c)
-                    for (unsigned int b = 0; b < 4; ++b)
-                      for (unsigned int d = 0; d < 3; ++d)
-                        total[d] += value_of(segment.D[c][b]) *
-                                      value_of(slave_corners[b][d]) -
-                                    value_of(segment.M[c][b]) *
-                                      value_of(master_corners[b][d]);
-                  if (std::abs(facet_normal * total) >
-                      margin * value_of(segment.area))
-                    continue;
-                }
-              if (record)
-                kept.push_back({i, m});
+              if constexpr (std::is_same<Number, double>::value)
+                if (record)
+                  {
+                    Tensor<1, 3> weighted[4];
+                    if (!within_margin(slave_corners,
+                                       master_corners,
+                                       segment,
+                                       weighted))
+                      continue;
+                    kept.push_back({{i, m}});
+                  }
               SegmentRow<Number> row{f, m, {}, {}};
               for (unsigned int b = 0; b < 4; ++b)
                 {
@@ -232,16 +212,11 @@ namespace rubberdyn
         traction = Number(-pass.penalty / A) * gap;
       else
         {
-          Vector n;
-          for (unsigned int j = pass.facet_start[k];
-               j < pass.facet_start[k + 1];
-               ++j)
-            {
-              const auto &c = facet_nodes[pass.node_facets[j]];
-              n += cross_product_3d(y[at(c[2])] - y[at(c[0])],
-                                    y[at(c[3])] - y[at(c[1])]);
-            }
-          n /= Number(n.norm());
+          const auto position =
+            [&](const unsigned int node) -> const Point<3, Number> & {
+            return y[at(node)];
+          };
+          const Vector n = nodal_normal<Number>(pass, k, position);
           const Number g = -(n * gap) / A;
           if (!(value_of(g) < 0.))
             return false;
@@ -249,28 +224,20 @@ namespace rubberdyn
           traction       = Number(-p) * n;
           if (coulomb)
             {
-              const model::ContactPairDefinition &def = definition;
-              const Tensor<1, 3> &accepted = pass.accepted_tangential[node];
-              Vector              old      = constant<Number>(accepted);
-              old -= (old * n) * n;
-              // (The norms only where they are not zero: their derivative
-              // is undefined there.)
-              if (value_of(old.norm()) > 0.)
-                old *= Number(accepted.norm() / old.norm());
-              Vector increment = slip / A;
-              increment -= (increment * n) * n;
-              Vector       tangential = old - pass.penalty * increment;
-              const double step       = time - time_accepted;
-              Number       rate       = 0.;
-              if (step > 0. && value_of(increment.norm()) > 0.)
-                rate = increment.norm() / step;
-              using std::exp;
-              const Number mu = def.dynamic_friction +
-                                (def.static_friction - def.dynamic_friction) *
-                                  exp(-def.decay * rate);
-              const Number limit = mu * p;
-              if (value_of(tangential.norm()) > value_of(limit))
-                tangential *= Number(limit / tangential.norm());
+              Vector     old, increment;
+              bool       slipping;
+              const auto tangential =
+                coulomb_return_mapping(pass.accepted_tangential[node],
+                                       n,
+                                       slip,
+                                       A,
+                                       p,
+                                       pass.penalty,
+                                       time - time_accepted,
+                                       definition,
+                                       old,
+                                       increment,
+                                       slipping);
               traction += tangential;
             }
         }
@@ -307,11 +274,7 @@ namespace rubberdyn
       for (unsigned int k = 0; k < pass.nodes.size(); ++k)
         {
           // Only a node with a facet of this rank carries forces here.
-          bool own = false;
-          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
-               ++j)
-            own = own || owns(pass, pass.node_gap_facets[j]);
-          if (!own)
+          if (!has_own_facet(pass, k))
             continue;
           patch_of(pass, k, patch);
           const unsigned int n_nodes = patch.size();
@@ -324,27 +287,23 @@ namespace rubberdyn
             continue;
 
           // The derivatives on the nodes that count: those of the node's
-          // slave facets and of the master facets they overlap (a third
-          // of the candidates' in the patch test; tied pairs have their
-          // segments' already).
+          // slave facets and of the master facets they overlap (a third of
+          // the candidates' in the patch test; a tied pair's patch has
+          // only its segments' already).
           if (!tied)
-            patch.clear();
-          for (unsigned int j = pass.facet_start[k];
-               j < pass.facet_start[k + 1];
-               ++j)
-            for (const unsigned int node : facet_nodes[pass.node_facets[j]])
-              patch.push_back(node);
-          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
-               ++j)
-            for (const unsigned int node :
-                 facet_nodes[pass.gap_facets[pass.node_gap_facets[j]]])
-              patch.push_back(node);
-          if (!tied)
-            for (const auto &overlap : overlaps)
-              for (const unsigned int node : facet_nodes[overlap[1]])
-                patch.push_back(node);
-          std::sort(patch.begin(), patch.end());
-          patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+            {
+              patch.clear();
+              for (unsigned int j = pass.facet_start[k];
+                   j < pass.facet_start[k + 1];
+                   ++j)
+                for (const unsigned int node : facet_nodes[pass.node_facets[j]])
+                  patch.push_back(node);
+              for (const auto &overlap : overlaps)
+                for (const unsigned int node : facet_nodes[overlap[1]])
+                  patch.push_back(node);
+              std::sort(patch.begin(), patch.end());
+              patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+            }
           const unsigned int n_patch = patch.size();
           const unsigned int n       = 3 * n_patch;
           y_ad.resize(n_patch);
@@ -410,11 +369,7 @@ namespace rubberdyn
       for (const Implementation::Pass &pass : I.passes)
         for (unsigned int k = 0; k < pass.nodes.size(); ++k)
           {
-            bool own = false;
-            for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
-                 ++j)
-              own = own || I.owns(pass, pass.node_gap_facets[j]);
-            if (!own)
+            if (!I.has_own_facet(pass, k))
               continue;
             I.patch_of(pass, k, patch);
             dofs.clear();
