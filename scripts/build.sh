@@ -17,9 +17,11 @@ ACTION=${1:-build}
 # system puts it before the reference BLAS). The quasi-static solver's
 # direct solver (MUMPS) spends most of its time in dgemm/dtrsm: 3.3 times
 # faster on bolted_plates.prm's load path (benchmarks/README.md). Serial:
-# the MPI ranks are the parallelism.
+# the MPI ranks are the parallelism. python3 (standard library only): the
+# script tests that read the ParaView output (tests/model/hertz_profile.py,
+# radius_profile.py).
 PACKAGES=(cmake make g++ lld libdeal.ii-dev numdiff ccache openmpi-bin perl
-          libopenblas0-serial)
+          libopenblas0-serial python3)
 
 install_missing_packages() {
   local missing=()
