@@ -158,8 +158,7 @@ namespace rubberdyn
 
       // The passes: slave -> master, and back for two-pass.
       std::vector<unsigned int> side_facets[2];
-      double                    mean_stiffness[2] = {0., 0.};
-      double                    diagonal          = 0.;
+      double                    diagonal = 0.;
       for (unsigned int f = 0; f < facets.size(); ++f)
         {
           const GatheredFacet &facet = facets[f];
@@ -168,18 +167,10 @@ namespace rubberdyn
                                  facet.X[2][2] - facet.X[0][2]);
           for (unsigned int side = 0; side < 2; ++side)
             if (facet.sides & (1u << side))
-              {
-                side_facets[side].push_back(f);
-                mean_stiffness[side] += facet.stiffness;
-              }
+              side_facets[side].push_back(f);
         }
-      for (unsigned int side = 0; side < 2; ++side)
-        if (!side_facets[side].empty())
-          mean_stiffness[side] /= side_facets[side].size();
       margin = facets.empty() ? 0. : 0.5 * diagonal / facets.size();
       margin = std::max(margin, definition.tie_tolerance);
-      const double penalty = definition.penalty_scale *
-                             std::min(mean_stiffness[0], mean_stiffness[1]);
       // Self-contact (the same ids on both sides): every facet is a slave
       // of the others already, both ways: one pass, half the penalty, as
       // a two-pass pair.
@@ -187,13 +178,13 @@ namespace rubberdyn
         definition.slave_boundary_ids == definition.master_boundary_ids;
       const unsigned int n_passes =
         definition.two_pass && !self_contact ? 2 : 1;
+      penalty_divisor = self_contact ? 2 : n_passes;
       passes.resize(n_passes);
       for (unsigned int p = 0; p < n_passes; ++p)
         {
           Pass &pass         = passes[p];
           pass.slave_facets  = side_facets[p];
           pass.master_facets = side_facets[1 - p];
-          pass.penalty       = penalty / (self_contact ? 2 : n_passes);
 
           // Which rank books a node: the lowest that owns a slave facet
           // around it; the gap facets: own ones and their neighbours.
@@ -271,14 +262,55 @@ namespace rubberdyn
             }
           pass.shown_pressure.assign(n_nodes, 0.);
           pass.shown_gap.assign(n_nodes, 0.);
+        }
+      set_penalty(false);
+    }
 
+
+
+    void
+    MortarContactPair::Implementation::set_penalty(const bool current)
+    {
+      // The smaller of the two sides' mean stiffness per area, K A / V, with
+      // A the facet's area now or in the reference configuration.
+      double mean_stiffness[2] = {0., 0.};
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          const std::vector<unsigned int> &side_facets =
+            side == 0 ? passes[0].slave_facets : passes[0].master_facets;
+          for (const unsigned int f : side_facets)
+            mean_stiffness[side] +=
+              facets[f].stiffness *
+              (current ? current_facet_area(f) / facet_area(f) : 1.);
+          if (!side_facets.empty())
+            mean_stiffness[side] /= side_facets.size();
+        }
+      const double penalty = definition.penalty_scale *
+                             std::min(mean_stiffness[0], mean_stiffness[1]) /
+                             penalty_divisor;
+      std::fill(node_stiffness.begin(), node_stiffness.end(), 0.);
+      for (Pass &pass : passes)
+        {
+          pass.penalty = penalty;
           // The penalty times the facet area around each node (the
           // stable step).
           for (const unsigned int side : {0u, 1u})
             for (const unsigned int f :
                  side == 0 ? pass.slave_facets : pass.master_facets)
-              for (const unsigned int node : facet_nodes[f])
-                node_stiffness[node] += pass.penalty * 0.25 * facet_area(f);
+              {
+                const double A =
+                  current ? current_facet_area(f) : facet_area(f);
+                for (const unsigned int node : facet_nodes[f])
+                  node_stiffness[node] += pass.penalty * 0.25 * A;
+              }
+        }
+      if (!node_mass.empty())
+        {
+          double largest = 0.;
+          for (unsigned int n = 0; n < x.size(); ++n)
+            largest = std::max(largest, node_stiffness[n] / node_mass[n]);
+          time_step = largest > 0. ? 2. / std::sqrt(2. * largest) :
+                                     std::numeric_limits<double>::max();
         }
     }
 
@@ -556,20 +588,26 @@ namespace rubberdyn
         I.definition.type == model::ContactPairDefinition::Type::tied;
       I.load_positions(point.displacement);
       // (The quasi-static solver has no masses: no stable step there.)
-      if (I.time_step < 0. && point.mass.linfty_norm() > 0.)
+      if (I.node_mass.empty() && point.mass.linfty_norm() > 0.)
         {
-          // The masses do not change during a run: the bound once.
+          // The masses do not change during a run: gathered once.
           VectorType mass(I.partitioner);
           mass.copy_locally_owned_data_from(point.mass);
           mass.update_ghost_values();
-          double largest = 0.;
+          I.node_mass.resize(I.x.size());
           for (unsigned int n = 0; n < I.x.size(); ++n)
-            largest = std::max(largest,
-                               I.node_stiffness[n] /
-                                 mass.local_element(I.node_dofs[n][0]));
-          I.time_step = largest > 0. ? 2. / std::sqrt(2. * largest) :
-                                       std::numeric_limits<double>::max();
+            I.node_mass[n] = mass.local_element(I.node_dofs[n][0]);
+          I.follow_pending = true;
         }
+      if (I.follow_pending)
+        {
+          I.set_penalty(true);
+          I.follow_pending = false;
+        }
+      // What the penalty updates since the accepted state added to the
+      // springs: (eps - eps_accepted) A g^2 / 2 normal, and the accepted
+      // tangential spring's energy A |t|^2 / 2 eps at the new penalty.
+      I.trial_stiffness_energy = 0.;
       if (!tied)
         I.search_if_needed();
 
@@ -618,6 +656,10 @@ namespace rubberdyn
                   const double       A    = pass.tied_area[node];
                   const Tensor<1, 3> mean = I.gap[node] / A;
                   I.traction[node]        = -pass.penalty * mean;
+                  if (pass.accepted_penalty >= 0. && pass.counted[node])
+                    I.trial_stiffness_energy +=
+                      0.5 * (pass.penalty - pass.accepted_penalty) * A *
+                      (mean * mean);
                   const double p       = -(I.traction[node] * I.normal[node]);
                   pass.shown_gap[node] = I.normal[node] * mean;
                   pass.shown_pressure[node] = p;
@@ -640,12 +682,28 @@ namespace rubberdyn
               I.compute_normals(pass);
               const model::ContactPairDefinition &def = I.definition;
               const double step = point.time - I.time_accepted;
+              const bool   book = pass.accepted_penalty >= 0.;
+              // The accepted springs' energy at the present penalty.
+              const double spring_scale =
+                book ? pass.accepted_penalty / pass.penalty : 1.;
               for (const unsigned int node : pass.nodes)
                 {
                   I.traction[node] = Tensor<1, 3>();
                   const double A   = I.area[node];
                   const double g =
                     A > 0. ? -(I.normal[node] * I.gap[node]) / A : 0.;
+                  const double accepted_spring =
+                    I.coulomb ?
+                      spring_scale * pass.accepted_spring_energy[node] :
+                      0.;
+                  if (book && pass.counted[node])
+                    I.trial_stiffness_energy +=
+                      (accepted_spring -
+                       (I.coulomb ? pass.accepted_spring_energy[node] : 0.)) +
+                      (A > 0. && g < 0. ?
+                         0.5 * (pass.penalty - pass.accepted_penalty) * A * g *
+                           g :
+                         0.);
                   pass.shown_gap[node]      = g;
                   pass.shown_pressure[node] = g < 0. ? -pass.penalty * g : 0.;
                   if (I.coulomb)
@@ -663,7 +721,7 @@ namespace rubberdyn
                           pass.trial_tangential[node]    = Tensor<1, 3>();
                           pass.trial_spring_energy[node] = 0.;
                           if (pass.counted[node])
-                            dissipation += pass.accepted_spring_energy[node];
+                            dissipation += accepted_spring;
                         }
                       continue;
                     }
@@ -700,7 +758,7 @@ namespace rubberdyn
                           // (trapezoidal) less what it stores.
                           dissipation +=
                             -0.5 * A * ((old + tangential) * increment) -
-                            (spring - pass.accepted_spring_energy[node]);
+                            (spring - accepted_spring);
                           energy += spring;
                         }
                     }
@@ -743,6 +801,9 @@ namespace rubberdyn
       I.f_pair.compress(VectorOperation::add);
       for (const unsigned int i : I.owned_surface_dofs)
         f.local_element(i) += I.f_pair.local_element(i);
+      // The springs' energy less what the penalty updates put in: the work
+      // done on them.
+      energy -= I.accepted_stiffness_energy + I.trial_stiffness_energy;
       results.contact_energy += energy;
       results.friction_dissipation += dissipation;
       if (I.time_step > 0.)
@@ -767,12 +828,30 @@ namespace rubberdyn
 
 
 
+    bool
+    MortarContactPair::follow_geometry()
+    {
+      impl->follow_pending = true;
+      return true;
+    }
+
+
+
     void
     MortarContactPair::accept_step()
     {
       Implementation &I = *impl;
-      if (!I.trial_pending || !I.coulomb)
+      if (!I.trial_pending)
         return;
+      I.accepted_stiffness_energy += I.trial_stiffness_energy;
+      I.trial_stiffness_energy = 0.;
+      for (Implementation::Pass &pass : I.passes)
+        pass.accepted_penalty = pass.penalty;
+      if (!I.coulomb)
+        {
+          I.trial_pending = false;
+          return;
+        }
       for (Implementation::Pass &pass : I.passes)
         for (const unsigned int node : pass.nodes)
           {
@@ -832,6 +911,10 @@ namespace rubberdyn
                               double(statistics.slipping_nodes),
                               I.energy};
       binary_io::write_doubles(out, shown, std::size(shown));
+      // The penalty updates' bookkeeping.
+      binary_io::write_doubles(out, &I.accepted_stiffness_energy, 1);
+      for (const Implementation::Pass &pass : I.passes)
+        binary_io::write_doubles(out, &pass.accepted_penalty, 1);
       if (!I.coulomb || I.x.empty())
         return;
       // Friction's history: the accepted tractions and spring energies,
@@ -935,6 +1018,16 @@ namespace rubberdyn
       statistics.active_nodes     = static_cast<unsigned int>(shown[9]);
       statistics.slipping_nodes   = static_cast<unsigned int>(shown[10]);
       I.energy                    = shown[11];
+      binary_io::read_doubles(in,
+                              &I.accepted_stiffness_energy,
+                              1,
+                              "contact pair penalty update energy");
+      for (Implementation::Pass &pass : I.passes)
+        binary_io::read_doubles(in,
+                                &pass.accepted_penalty,
+                                1,
+                                "contact pair accepted penalty");
+      I.trial_stiffness_energy = 0.;
       // The candidates are found anew from the loaded positions (the
       // segments do not depend on which extra candidates a search keeps).
       I.searched = false;

@@ -117,8 +117,13 @@ namespace rubberdyn
       struct Pass
       {
         std::vector<unsigned int> slave_facets, master_facets;
-        /** Penalty stiffness per area (GPa/mm). */
+        /** Penalty stiffness per area (GPa/mm), held between updates. */
         double penalty = 0.;
+        /**
+         * The penalty of the last accepted evaluation (negative: none since
+         * the start, no update to book) (GPa/mm).
+         */
+        double accepted_penalty = -1.;
         /**
          * The slave facets this rank integrates (its own and those of other
          * ranks that share a node with them), ascending.
@@ -308,6 +313,39 @@ namespace rubberdyn
        */
       std::vector<double> node_stiffness;
 
+      /**
+       * The passes' penalties and the nodes' stiffness (node_stiffness,
+       * and with it the stable step) from the facets' areas now
+       * (@p current) or in the reference configuration: each facet's
+       * stiffness K A / V grows with its area (V is the reference volume:
+       * the pair holds the facets, not their cells; for rubber, nearly
+       * incompressible, it is the current one within the volume strain).
+       */
+      void
+      set_penalty(const bool current);
+
+      /** Area of facet @p f now (mm^2). */
+      double
+      current_facet_area(const unsigned int f) const
+      {
+        const auto &c = facet_nodes[f];
+        return 0.5 *
+               cross_product_3d(x[c[2]] - x[c[0]], x[c[3]] - x[c[1]]).norm();
+      }
+
+      /** Whether the next add_forces() calls set_penalty(true). */
+      bool follow_pending = false;
+      /** The divisor of each pass's penalty: 2 for two-pass and self-contact
+       * pairs (symmetric treatment), else 1. */
+      double penalty_divisor = 1.;
+      /** Lumped mass of each node (kg, with mass scaling), once known. */
+      std::vector<double> node_mass;
+      /**
+       * Energy the penalty updates added to the springs up to the accepted
+       * state and in the last evaluation, this rank's booked nodes (J).
+       */
+      double accepted_stiffness_energy = 0., trial_stiffness_energy = 0.;
+
       /** Area of facet @p f in the reference configuration (mm^2). */
       double
       facet_area(const unsigned int f) const
@@ -337,7 +375,8 @@ namespace rubberdyn
       std::vector<double>       area;
       std::vector<Tensor<1, 3>> gap, normal, traction;
 
-      /** Stable step of the penalty (ms), once the masses are known. */
+      /** Stable step of the penalty (ms), once the masses are known (a
+       * negative number until then). */
       double time_step = -1.;
 
       /** Coulomb: whether the pair has friction. */

@@ -2,6 +2,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/fe/fe.h>
 
+#include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 
 #include <cmath>
@@ -30,10 +31,11 @@ namespace rubberdyn
           AssertThrow(surface.friction_coefficient >= 0.,
                       ExcMessage("friction coefficients must not be negative"));
         }
-      // Stiffness per node, accumulated in a vector over the z dofs.
-      VectorType stiffness(partitioner);
+      // The contact faces of the owned cells, and the nodes' stiffness in
+      // the reference configuration summed over the z dofs.
       const FiniteElement<3> &fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      faces.clear();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -42,31 +44,39 @@ namespace rubberdyn
               if (cell->at_boundary(face) &&
                   boundary_ids.count(cell->face(face)->boundary_id()))
                 {
-                  const double area = cell->face(face)->measure();
-                  const double k = penalty_scale *
-                                   bulk_modulus_by_material.at(
-                                     cell->material_id()) *
-                                   area * area / cell->measure();
-                  for (unsigned int v = 0; v < 4; ++v)
+                  Face f;
+                  for (unsigned int a = 0; a < 8; ++a)
                     {
-                      // The set of a face's vertices does not depend on
-                      // its orientation.
-                      const unsigned int a =
-                        GeometryInfo<3>::face_to_cell_vertices(face, v);
-                      stiffness[dof_indices[fe.component_to_system_index(
-                        2, a)]] += k / 4.;
+                      for (unsigned int d = 0; d < 3; ++d)
+                        f.dofs[a][d] = partitioner->global_to_local(
+                          dof_indices[fe.component_to_system_index(d, a)]);
+                      f.X[a] = cell->vertex(a);
                     }
+                  // deal.II numbers a face's vertices lexicographically:
+                  // 0, 1, 3, 2 go round it.
+                  const unsigned int cyclic[4] = {0, 1, 3, 2};
+                  for (unsigned int v = 0; v < 4; ++v)
+                    f.corner[v] =
+                      GeometryInfo<3>::face_to_cell_vertices(face, cyclic[v]);
+                  f.scaled_bulk_modulus =
+                    penalty_scale *
+                    bulk_modulus_by_material.at(cell->material_id());
+                  faces.push_back(f);
                 }
           }
-      stiffness.compress(VectorOperation::add);
+      stiffness_sum.reinit(partitioner);
+      {
+        VectorType zero(partitioner);
+        compute_stiffness(zero);
+      }
 
       nodes.clear();
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
-        if (stiffness.local_element(i) > 0.)
+        if (stiffness_sum.local_element(i) > 0.)
           {
             // i is a z dof; its x and y dofs belong to the same vertex.
             Node node;
-            node.stiffness = stiffness.local_element(i);
+            node.stiffness = stiffness_sum.local_element(i);
             node.dofs[2]   = i;
             node.dofs[0]   = node.dofs[1] = numbers::invalid_unsigned_int;
             nodes.push_back(node);
@@ -106,6 +116,99 @@ namespace rubberdyn
           accepted_state[n * 6 + d] = 0.;
       trial_state   = accepted_state;
       trial_pending = false;
+      accepted_stiffness.clear();
+      accepted_stiffness_energy = trial_stiffness_energy = 0.;
+      follow_pending                                     = false;
+    }
+
+
+
+    void
+    RigidSurfaceContact::compute_stiffness(const VectorType &u)
+    {
+      stiffness_sum = 0.;
+      for (const Face &face : faces)
+        {
+          Point<3> x[8];
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              x[a] = face.X[a];
+              for (unsigned int d = 0; d < 3; ++d)
+                x[a][d] += u.local_element(face.dofs[a][d]);
+            }
+          // The face's area: half the cross product of its diagonals (the
+          // area of a plane quadrilateral, of a warped one's projection).
+          const double area =
+            0.5 * cross_product_3d(x[face.corner[2]] - x[face.corner[0]],
+                                   x[face.corner[3]] - x[face.corner[1]])
+                    .norm();
+          // The cell's volume: the Jacobian of the trilinear map at the
+          // centre (exact for a parallelepiped; a measure of size is all the
+          // penalty needs). Its columns are the mean edge vectors in each
+          // reference direction (vertex a at bits (i, j, k) of a).
+          Tensor<2, 3> J;
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int r = 0; r < 3; ++r)
+              {
+                const double sign = (a >> r) & 1 ? 0.25 : -0.25;
+                for (unsigned int d = 0; d < 3; ++d)
+                  J[d][r] += sign * x[a][d];
+              }
+          const double volume = determinant(J);
+          // An inverted cell is the elements' failure to report; its face
+          // keeps a positive stiffness meanwhile.
+          const double k =
+            face.scaled_bulk_modulus * area * area / std::abs(volume);
+          for (unsigned int v = 0; v < 4; ++v)
+            stiffness_sum.local_element(face.dofs[face.corner[v]][2]) +=
+              0.25 * k;
+        }
+      stiffness_sum.compress(VectorOperation::add);
+      for (Node &node : nodes)
+        node.stiffness = stiffness_sum.local_element(node.dofs[2]);
+    }
+
+
+
+    void
+    RigidSurfaceContact::follow_geometry()
+    {
+      follow_pending = true;
+    }
+
+
+
+    void
+    RigidSurfaceContact::save_stiffness(std::ostream &out) const
+    {
+      const unsigned int n = accepted_stiffness.size();
+      binary_io::write_doubles(out, &accepted_stiffness_energy, 1);
+      const double n_stored = n;
+      binary_io::write_doubles(out, &n_stored, 1);
+      binary_io::write_doubles(out, accepted_stiffness.data(), n);
+    }
+
+
+
+    void
+    RigidSurfaceContact::load_stiffness(std::istream &in)
+    {
+      binary_io::read_doubles(in,
+                              &accepted_stiffness_energy,
+                              1,
+                              "contact stiffness energy");
+      double n_stored = 0.;
+      binary_io::read_doubles(in, &n_stored, 1, "contact stiffness count");
+      AssertThrow(n_stored == 0. || n_stored == nodes.size(),
+                  ExcMessage("The checkpoint's contact stiffness has " +
+                             std::to_string(n_stored) + " nodes, the mesh " +
+                             std::to_string(nodes.size())));
+      accepted_stiffness.resize(static_cast<unsigned int>(n_stored));
+      binary_io::read_doubles(in,
+                              accepted_stiffness.data(),
+                              accepted_stiffness.size(),
+                              "contact stiffness");
+      trial_stiffness_energy = 0.;
     }
 
 
@@ -287,13 +390,24 @@ namespace rubberdyn
       result.moment_on_plane.assign(n_surfaces, Tensor<1, 3>());
       result.penalty_energy       = 0.;
       result.friction_dissipation = 0.;
+      if (follow_pending)
+        {
+          compute_stiffness(u);
+          follow_pending = false;
+        }
+      // What the stiffness updates since the accepted state added to the
+      // springs (none booked before the first accepted evaluation).
+      const bool book_update = !accepted_stiffness.empty();
+      trial_stiffness_energy = 0.;
       n_touched.resize(nodes.size());
       const Tensor<2, 3> no_curvature;
       NodeContact        c;
       for (unsigned int n = 0; n < nodes.size(); ++n)
         {
           n_touched[n] = 0;
-          const Node &node = nodes[n];
+          const Node  &node = nodes[n];
+          const double k_accepted =
+            book_update ? accepted_stiffness[n] : node.stiffness;
           Point<3>    x    = node.X;
           for (unsigned int d = 0; d < 3; ++d)
             x[d] += u.local_element(node.dofs[d]);
@@ -316,6 +430,33 @@ namespace rubberdyn
                   tangential_force[d] = old[d];
                   last_position[d]    = old[3 + d];
                   state[3 + d]        = x_relative[d];
+                }
+              if (book_update && !std::isnan(last_position[0]))
+                {
+                  // The normal spring: what it stores now beyond the
+                  // accepted state less the work the node did on it since
+                  // (trapezoidal rule, as the energy balance sees the
+                  // forces), i.e. what the stiffness updates put in.
+                  double       gap_accepted;
+                  Tensor<1, 3> normal_accepted;
+                  gap_and_normal(surface,
+                                 Point<3>(last_position),
+                                 gap_accepted,
+                                 normal_accepted);
+                  const double pressed_now = std::max(-gap, 0.);
+                  const double pressed_accepted = std::max(-gap_accepted, 0.);
+                  const Tensor<1, 3> force_sum =
+                    node.stiffness * pressed_now * normal +
+                    k_accepted * pressed_accepted * normal_accepted;
+                  trial_stiffness_energy +=
+                    0.5 * node.stiffness * pressed_now * pressed_now -
+                    0.5 * k_accepted * pressed_accepted * pressed_accepted +
+                    0.5 * force_sum * (x_relative - last_position);
+                  // The tangential spring: its accepted force's energy
+                  // |f_t|^2 / 2k at the new stiffness.
+                  trial_stiffness_energy +=
+                    0.5 * tangential_force.norm_square() *
+                    (1. / node.stiffness - 1. / k_accepted);
                 }
               if (gap >= 0.)
                 {
@@ -384,6 +525,8 @@ namespace rubberdyn
                 cross_product_3d(x - p.centre - p.displacement, force);
             }
         }
+      result.penalty_energy -=
+        accepted_stiffness_energy + trial_stiffness_energy;
       trial_pending = true;
     }
 
@@ -393,7 +536,14 @@ namespace rubberdyn
     RigidSurfaceContact::accept()
     {
       if (trial_pending)
-        accepted_state.swap(trial_state);
+        {
+          accepted_state.swap(trial_state);
+          accepted_stiffness_energy += trial_stiffness_energy;
+          trial_stiffness_energy = 0.;
+          accepted_stiffness.resize(nodes.size());
+          for (unsigned int n = 0; n < nodes.size(); ++n)
+            accepted_stiffness[n] = nodes[n].stiffness;
+        }
       trial_pending = false;
     }
 

@@ -147,6 +147,15 @@ namespace rubberdyn
 
 
 
+    bool
+    RigidSurfaceForces::follow_geometry()
+    {
+      contact.follow_geometry();
+      return true;
+    }
+
+
+
     void
     RigidSurfaceForces::accept_step()
     {
@@ -180,6 +189,7 @@ namespace rubberdyn
       binary_io::write_doubles(out, state.data(), state.size());
       binary_io::write_doubles(out, &accepted_friction_work, 1);
       binary_io::write_doubles(out, &contact_result.penalty_energy, 1);
+      contact.save_stiffness(out);
     }
 
 
@@ -193,6 +203,7 @@ namespace rubberdyn
                               "friction work");
       binary_io::read_doubles(in, &contact_result.penalty_energy, 1,
                               "contact energy");
+      contact.load_stiffness(in);
       contact_result.friction_dissipation = 0.;
     }
   } // namespace contact

@@ -628,6 +628,9 @@ namespace rubberdyn
       results.reset(n_groups, bodies.size());
       const model::EvaluationPoint point{u, v, mass, bodies, current_time};
       f = 0.;
+      // The penalty stiffness of contact follows the geometry of every step.
+      for (model::ForceContribution *contribution : contributions)
+        contribution->follow_geometry();
       auto clock = std::chrono::steady_clock::now();
       // Internal forces first (owned and ghost entries), then compress and
       // turn them into forces on the solid, then the external forces.

@@ -70,6 +70,14 @@ namespace rubberdyn
         const bool                                                bodies_move,
         const std::vector<RigidPartInEquilibrium>                &rigid_parts);
 
+      /**
+       * Ask every contribution to take its geometry-dependent parameters
+       * (penalty stiffness) from the next evaluation's state; whether any
+       * has such parameters.
+       */
+      bool
+      follow_geometry();
+
       /** Place the rigid bodies where the load path has them at @p t. */
       void
       place_bodies(const double t);
@@ -500,6 +508,17 @@ namespace rubberdyn
                                                  comm,
                                                  coupled_rows);
       matrix.reinit(owned, owned, dsp, comm);
+    }
+
+
+
+    bool
+    QuasiStaticSolver::Implementation::follow_geometry()
+    {
+      bool any = false;
+      for (model::ForceContribution *load : loads)
+        any = load->follow_geometry() || any;
+      return any;
     }
 
 
@@ -1279,6 +1298,7 @@ namespace rubberdyn
     void
     QuasiStaticSolver::initialize()
     {
+      impl->follow_geometry();
       evaluate_state();
       for (model::ForceContribution *load : impl->loads)
         load->accept_step();
@@ -1398,6 +1418,11 @@ namespace rubberdyn
           for (unsigned int s = 0; s < shortening.size(); ++s)
             if (!I.section_unknown[s])
               delta_increment[s] = prescribed[s] - shortening[s];
+          // The penalty stiffness of the converged state (again after a
+          // cut-back); then of the predictor's state, held during the
+          // iterations; in the last step also of the converged state.
+          const bool follows_geometry = I.follow_geometry();
+          const bool last_step        = t_new >= end_time * (1. - 1e-12);
           I.evaluate(u, shortening, part_poses, t_new, t_new, r);
           const bool surfaces_move =
             I.bodies_move_between(current_time, t_new);
@@ -1521,6 +1546,14 @@ namespace rubberdyn
               std::swap(r, r_trial);
               shortening.swap(delta_trial);
               part_poses.swap(poses_trial);
+              // The predictor has taken most of the step's motion: the
+              // penalty of its geometry is close to the converged one's,
+              // so that the update on convergence below changes little.
+              if (predictor && follows_geometry)
+                {
+                  I.follow_geometry();
+                  I.evaluate(u, shortening, part_poses, t_new, t_new, r);
+                }
 
               const double scale =
                 std::max({r.reaction_norm, r.load_norm, s.residual_floor});
@@ -1538,8 +1571,8 @@ namespace rubberdyn
                     << ", " << std::fixed << std::setprecision(2) << wall()
                     << " s" << std::defaultfloat << std::setprecision(6)
                     << std::endl;
-              const bool residual_ok = r.free_norm <= s.residual_floor ||
-                                       ratio <= s.residual_tolerance;
+              bool residual_ok = r.free_norm <= s.residual_floor ||
+                                 ratio <= s.residual_tolerance;
               // (In a step in which nothing changes, e.g. a held load with
               // friction, even the first iteration's energy is round-off:
               // an increment at the round-off of the strain energy is
@@ -1548,6 +1581,34 @@ namespace rubberdyn
                 r.free_norm <= s.residual_floor ||
                 energy_increment <= s.energy_tolerance * first_energy ||
                 energy_increment <= 1e-15 * std::abs(r.energy);
+              if (!predictor && residual_ok && energy_ok && follows_geometry &&
+                  last_step)
+                {
+                  // The run's last state (an explicit run may start from
+                  // it): converged with the penalty held, take the penalty
+                  // of this state, and go on iterating unless that changed
+                  // nothing of note: the residual with it as small as
+                  // before (within 10 times, or 1e-3 of the tolerance), so
+                  // that the state is an equilibrium with its own penalty
+                  // as closely as Newton converges (the explicit run that
+                  // starts from it sees no jolt).
+                  I.follow_geometry();
+                  I.evaluate(u, shortening, part_poses, t_new, t_new, r);
+                  const double scale_now =
+                    std::max({r.reaction_norm, r.load_norm, s.residual_floor});
+                  const double ratio_now = r.free_norm / scale_now;
+                  residual_ok =
+                    !r.failed &&
+                    (r.free_norm <= s.residual_floor ||
+                     ratio_now <= std::max(10. * ratio,
+                                           1e-3 * s.residual_tolerance));
+                  if (root && !residual_ok)
+                    log << "    penalty stiffness of this state: residual "
+                        << std::scientific << std::setprecision(3)
+                        << r.free_norm << " kN, relative " << ratio_now
+                        << std::defaultfloat
+                        << std::setprecision(6) << std::endl;
+                }
               if (!predictor && residual_ok && energy_ok)
                 {
                   converged = true;

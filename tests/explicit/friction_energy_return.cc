@@ -162,7 +162,9 @@ main(int argc, char **argv)
            "each phase, to 1e-12 of W: "
         << (largest_error < 1e-12 ? "yes" : "no") << std::endl
         << "C. After unloading to a zero gap the springs hold nothing: "
-        << (stored_after_unloading == 0. ? "yes" : "no")
+        << (std::abs(stored_after_unloading) <= 1e-12 * sheared_energy ?
+              "yes" :
+              "no")
         << "; the sheared energy went to friction: "
         << (error_after_unloading < 1e-12 * sheared_energy ? "yes" : "no")
         << std::endl
@@ -174,7 +176,12 @@ main(int argc, char **argv)
             << " J sheared; slip dissipation error "
             << sci(slip_dissipation_error) << std::endl;
   check(largest_error < 1e-12, "the contact springs' energy balance");
-  check(stored_after_unloading == 0., "nothing stored after separation");
+  // (penalty_energy is the work done on the springs, the normal ones' summed
+  // step by step by the trapezoidal rule since the penalty follows the
+  // geometry: zero to round-off once the gap is closed again, no longer
+  // exactly 0.)
+  check(std::abs(stored_after_unloading) <= 1e-12 * sheared_energy,
+        "nothing stored after separation");
   check(error_after_unloading < 1e-12 * sheared_energy,
         "the sheared energy is dissipated when the limit shrinks");
   check(slip_dissipation_error < 1e-12, "steady slip dissipation");

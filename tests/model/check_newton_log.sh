@@ -2,7 +2,10 @@
 # check_newton_log.sh LOG START CONSTANT MAX_ITERATIONS [FLOOR]: second-order
 # convergence of the quasi-static solver, read from its log (one
 # "  Step to" line per load step, one "    iteration k: ..., relative r,
-# ..." line per Newton iteration): in every step, once the relative
+# ..." line per Newton iteration, and "    penalty stiffness of this
+# state: ..., relative r" where a contact's penalty, updated to the
+# converged state, left the residual r to iterate on from): in every
+# step, once the relative
 # residual r_{k-1} is below START, r_k <= CONSTANT r_{k-1}^2 + FLOOR (the
 # round-off floor of the force sums; default 1e-11, 1000 times below the
 # default Residual tolerance; a model whose reactions are small against its
@@ -13,6 +16,10 @@
 set -euo pipefail
 awk -v start="$2" -v constant="$3" -v max_iterations="$4" -v floor="${5:-1e-11}" '
   /^  Step to/ { k = 0; next }
+  /^    penalty stiffness of this state/ {
+    for (i = 1; i <= NF; ++i) if ($i == "relative") previous = $(i + 1) + 0
+    next
+  }
   /^    iteration/ {
     ++k
     for (i = 1; i <= NF; ++i) if ($i == "relative") r = $(i + 1) + 0

@@ -8,8 +8,13 @@
 # force has converged in the penalty: 2.2906 kN at 3, 2.2976 kN at 10).
 # Issue 8's bounds, checked:
 #  - the force at maximum compression (where the impactor's momentum
-#    crosses zero, interpolated between rows 0.01 ms apart): the top pair's
-#    normal force against the rigid impactor's force, within 2 %;
+#    crosses zero, interpolated between rows 0.01 ms apart), measured as
+#    the impactor's rate of change of momentum there (the least-squares
+#    slope of its momentum over +-0.1 ms: the mean contact force, free of
+#    the chatter of the rubber's end nodes on their stiff springs, which a
+#    single row of the force column catches anywhere between 50 and 110 %
+#    of it at Penalty scale factor 10), deformable against rigid, within
+#    2 %;
 #  - the penetration there (both pairs' max_penetration) below 1 % of the
 #    compression (the rigid impactor's travel);
 #  - the energy error of the deformable run at most 1 % of the energy
@@ -59,11 +64,24 @@ crossing() {
     }
     { previous = v; for (k = 1; k <= n; ++k) last[k] = $c[w[k]] }' "$1"
 }
-read -r t_d F_d F_bottom pen_top pen_bottom < <(crossing \
+# slope CSV COLUMN TIME HALF_WIDTH: the least-squares slope of the column
+# against time over the rows within HALF_WIDTH of TIME.
+slope() {
+  awk -F, -v col="$2" -v tc="$3" -v w="$4" '
+    NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    { t = $c["time"] - tc; if (t < -w || t > w) next
+      n++; st += t; sy += $c[col]; stt += t * t; sty += t * $c[col] }
+    END { printf "%.10g\n", (n * sty - st * sy) / (n * stt - st * st) }' "$1"
+}
+read -r t_d F_bottom pen_top pen_bottom < <(crossing \
   $name/time_history.csv impactor_momentum_z \
-  "time top_normal_force bottom_normal_force top_max_penetration bottom_max_penetration")
-read -r t_r F_r z_r < <(crossing rigid/time_history.csv impactor_velocity_z \
-  "time impactor_force_z impactor_position_z")
+  "time bottom_normal_force top_max_penetration bottom_max_penetration")
+read -r t_r z_r < <(crossing rigid/time_history.csv impactor_velocity_z \
+  "time impactor_position_z")
+# (Momentum in kg mm/ms: its rate in kN; the rigid impactor's 5 kg.)
+F_d=$(slope $name/time_history.csv impactor_momentum_z "$t_d" 0.1)
+F_r=$(awk -v a="$(slope rigid/time_history.csv impactor_velocity_z "$t_r" 0.1)" \
+  'BEGIN { printf "%.10g\n", 5 * a }')
 awk -v t_d="$t_d" -v F_d="$F_d" -v Fb="$F_bottom" -v pt="$pen_top" \
     -v pb="$pen_bottom" -v t_r="$t_r" -v F_r="$F_r" -v z_r="$z_r" 'BEGIN {
   travel = 24 - z_r; e = F_d / F_r - 1; pen = (pt > pb ? pt : pb) / travel

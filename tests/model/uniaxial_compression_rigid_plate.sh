@@ -19,7 +19,12 @@
 #   1e-7 relative, and the x = 0 and y = 0 planes carry no normal force
 #   (below 1e-6 of it);
 # - quadratic convergence from the log, as uniaxial_compression_quasi_static
-#   (the contact tangent is exact).
+#   (the contact tangent is exact for the penalty held), in at most 4
+#   iterations per step but the last, which takes 11 (at most 12 checked):
+#   the last state is brought into equilibrium with the penalty of its own
+#   geometry, each update of the penalty costing one or two iterations (it
+#   grows as 1/lambda^2 while the block is squashed; doc/quasi_static.md,
+#   "Contact penalty and the geometry").
 # On 2 ranks the history must equal the 1-rank run's to 1e-8 relative.
 # Usage: uniaxial_compression_rigid_plate.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
@@ -51,7 +56,7 @@ awk -F, '
     printf "%d load steps; largest deviation from eq. 4.8 %.4f %% (t = %.2f); plate place %.1e mm; balance %.2e; lateral %.2e\n", rows, 100 * worst, worst_t, worst_place, worst_balance, worst_lateral
     exit (rows != 20 || worst > 0.002 || bad_penetration || worst_place > 1e-12 || worst_balance > 1e-7 || worst_lateral > 1e-6)
   }' $name/time_history.csv
-bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-2 10 6
+bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-2 10 12
 if [ "$nproc" -gt 1 ]; then
   mkdir -p serial && cd serial
   bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \

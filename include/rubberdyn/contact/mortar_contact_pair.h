@@ -91,7 +91,18 @@ namespace rubberdyn
      * $\varepsilon = s\,\min(\overline{K/h}_{slave}, \overline{K/h}_{master})$,
      * s the `Penalty scale` and $\overline{K/h}$ the mean over a side's
      * facets of the bulk modulus of the element under it over its
-     * thickness V/A (GPa/mm).
+     * thickness V/A (GPa/mm), with A the facet's current area (V that of
+     * the reference: the pair has the facets, not their cells). It is
+     * computed when follow_geometry() asks, at the next add_forces(), and
+     * held until the next request (every explicit step; in the
+     * quasi-static solver after a load step's predictor and on the run's
+     * last convergence, doc/quasi_static.md), so
+     * that the tangent is exact for the penalty held; a compressed rubber
+     * face that spreads stiffens its penalty as its elements stiffen. An
+     * update adds $\tfrac12\Delta\varepsilon A_a g_a^2$ to a closed
+     * node's spring without work; the energy the pair reports is the work
+     * done on its springs (what they hold less what the updates added), so
+     * the energy balance closes.
      *
      * <h3>Coulomb friction</h3>
      * A return mapping on the weighted slip (Puso & Laursen 2004, sect. 5):
@@ -198,6 +209,10 @@ namespace rubberdyn
       /** The number of searches so far: new candidates, new couplings. */
       unsigned int
       couplings_version() const override;
+
+      /** The penalty follows the facets' current areas. */
+      bool
+      follow_geometry() override;
 
       /** Make the friction state of the last evaluation the accepted one. */
       void

@@ -9,6 +9,7 @@
 #include <rubberdyn/base/vector.h>
 
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <set>
 #include <vector>
@@ -94,8 +95,10 @@ namespace rubberdyn
        */
       std::vector<Tensor<1, 3>> moment_on_plane;
       /**
-       * Energy stored in the normal and tangential penalty springs (J = kN
-       * mm).
+       * Work done by the solid on the normal and tangential penalty springs
+       * (J = kN mm): the energy they store less what the updates of their
+       * stiffness to the current geometry put in
+       * (RigidSurfaceContact::follow_geometry()).
        */
       double penalty_energy = 0.;
       /** Energy dissipated by Coulomb slip in this evaluation (J). */
@@ -112,7 +115,32 @@ namespace rubberdyn
      * face of the node, a quarter of the face stiffness $k = s K A^2 / V$
      * (LS-DYNA's choice for solids: $s$ the penalty scale factor, $K$ the
      * bulk modulus of the face's element, $A$ the face area, $V$ the element
-     * volume).
+     * volume), both of the current geometry: the stiffness per area, $s K
+     * A / V = s K / h$, follows the element's thickness h normal to the
+     * surface as the element's own stiffness does, so that the penetration
+     * stays the same small fraction of the element's compression however
+     * far a rubber element is squashed. (With the reference geometry the
+     * stiffness per area fell as $A_0/A$ while the rubber spread under
+     * compression: 8 % of the drop test's force at maximum compression sat
+     * in the springs, doc/drop_test.md.) The stiffness is computed when
+     * follow_geometry() asks for it, at the next add_forces(), and held
+     * until the next request: the explicit solver asks at every step, the
+     * quasi-static solver after each load step's predictor and when Newton
+     * has converged in the run's last step (then it iterates on, if the
+     * residual with the new stiffness is not converged: the state an
+     * explicit run may start from), so that its tangent is the exact
+     * derivative of forces whose stiffness is constant during the
+     * iterations. The force is $-k g\,n$ with that stiffness (as in the
+     * crash codes; not the gradient of $k g^2/2$, which would add
+     * $-\tfrac12 g^2 \nabla k$ on the face's nodes): an update that
+     * changes k under a node with the gap g adds $\tfrac12 \Delta k\,g^2$
+     * to the spring without work. ContactResult::penalty_energy is
+     * therefore the work done on the springs, the normal one's by the
+     * trapezoidal rule over each step (as the central differences see the
+     * force), not the energy they hold, so the energy balance closes (as
+     * LS-DYNA's sliding interface energy); what the updates and the
+     * sampling of a stiff spring put in or took shows as the work left
+     * after the contact opens.
      *
      * Friction: an elastic-plastic tangential spring of the same stiffness
      * (regularised Coulomb law, e.g. Wriggers, Computational Contact
@@ -156,7 +184,7 @@ namespace rubberdyn
     public:
       /**
        * Find the boundary nodes (on faces with one of @p boundary_ids) and
-       * their penalty stiffness.
+       * their penalty stiffness in the reference configuration.
        *
        * @param bulk_modulus_by_material K (GPa) for each material id.
        */
@@ -188,6 +216,24 @@ namespace rubberdyn
        */
       void
       accept();
+
+      /**
+       * Have the next add_forces() compute the penalty stiffness from its
+       * displacement (the current face areas and element volumes), and hold
+       * it until the next call. Collective: the nodes' stiffness gathers
+       * the faces of the cells of every rank around them.
+       */
+      void
+      follow_geometry();
+
+      /**
+       * Write (read) what a checkpoint needs beyond state(): the stiffness
+       * of the accepted state and the energy its updates have added.
+       */
+      void
+      save_stiffness(std::ostream &out) const;
+      void
+      load_stiffness(std::istream &in);
 
       /**
        * Receives the tangent of one node against one surface: the local
@@ -300,8 +346,46 @@ namespace rubberdyn
       static Point<3>
       relative_position(const SurfacePose &pose, const Point<3> &x);
 
+      /**
+       * A contact face of a locally owned cell: what its penalty stiffness
+       * $s K A^2/V$ needs in the current geometry.
+       */
+      struct Face
+      {
+        /** Local indices of the x, y, z dofs of the cell's 8 vertices. */
+        unsigned int dofs[8][3];
+        /** Reference positions of the cell's vertices (mm). */
+        Point<3> X[8];
+        /** The face's vertices (cell numbering) in cyclic order. */
+        unsigned char corner[4];
+        /** s K (GPa) of the cell's material. */
+        double scaled_bulk_modulus;
+      };
+
+      /**
+       * Each node's stiffness from the faces at displacement @p u (ghosted):
+       * every rank its own cells' faces, summed at the nodes.
+       */
+      void
+      compute_stiffness(const VectorType &u);
+
       std::vector<Node>         nodes;
+      std::vector<Face>         faces;
       std::vector<RigidSurface> surfaces;
+      /** Sums the faces' stiffness at the nodes (z dofs, with ghosts). */
+      VectorType stiffness_sum;
+      /** Whether the next add_forces() computes the stiffness. */
+      bool follow_pending = false;
+      /**
+       * Each node's stiffness at the last accepted evaluation (empty: none
+       * since the start, no update to book) (kN/mm).
+       */
+      std::vector<double> accepted_stiffness;
+      /**
+       * Energy the stiffness updates added to the springs up to the
+       * accepted state, and in the last evaluation (J).
+       */
+      double accepted_stiffness_energy = 0., trial_stiffness_energy = 0.;
       /**
        * Per node n and surface s, at [(n * n_surfaces + s) * 6]: the
        * tangential force (kN, 3) and the node's position relative to the

@@ -41,6 +41,10 @@ namespace rubberdyn
                  VectorType &                  f,
                  model::ContributionResults &  results) override;
 
+      /** The penalty stiffness follows the current geometry. */
+      bool
+      follow_geometry() override;
+
       void
       accept_step() override;
 

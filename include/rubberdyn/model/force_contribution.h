@@ -135,6 +135,24 @@ namespace rubberdyn
                  VectorType            &f,
                  ContributionResults   &results) = 0;
 
+      /**
+       * Have the next add_forces() take the parameters that follow the
+       * geometry (a contact's penalty stiffness, from the current face
+       * areas) from the displacement it is given, and hold them until the
+       * next call, so that add_tangents() is the exact derivative of forces
+       * with those parameters fixed. The explicit solver calls it before
+       * every step, the quasi-static solver at the start of a load step,
+       * after its predictor and, in the run's last step, on convergence
+       * (then it iterates on if the residual is no longer converged).
+       * Returns whether the contribution has such parameters; the default
+       * has none.
+       */
+      virtual bool
+      follow_geometry()
+      {
+        return false;
+      }
+
       /** The step was taken: make the history of the last evaluation current.
        */
       virtual void
