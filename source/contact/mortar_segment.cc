@@ -338,8 +338,6 @@ namespace rubberdyn
     {
       if (degenerate)
         return false;
-      const unsigned int         first_row = row < 4 ? row : 0;
-      const unsigned int         end_row   = row < 4 ? row + 1 : 4;
       const Tensor<1, 3, Number> master_normal =
         cross_product_3d(master[2] - master[0], master[3] - master[1]);
       if (!(value_of(master_normal * normal) < 0.))
@@ -436,13 +434,24 @@ namespace rubberdyn
               facet_shape_values(xi[g], eta[g], N);
               facet_shape_values(master_xi[g], master_eta[g], N_master);
               const Number w = triangle_area * rule_weight[g];
-              for (unsigned int a = first_row; a < end_row; ++a)
+              // (Two loops with fixed bounds, which the compiler unrolls.)
+              if (all_rows)
+                for (unsigned int a = 0; a < 4; ++a)
+                  {
+                    const Number w_a = w * N[a];
+                    for (unsigned int b = a; b < 4; ++b)
+                      segment.D[a][b] += w_a * N[b];
+                    for (unsigned int b = 0; b < 4; ++b)
+                      segment.M[a][b] += w_a * N_master[b];
+                  }
+              else
                 {
-                  const Number w_a = w * N[a];
-                  for (unsigned int b = all_rows ? a : 0; b < 4; ++b)
-                    segment.D[a][b] += w_a * N[b];
+                  const Number w_a = w * N[row];
                   for (unsigned int b = 0; b < 4; ++b)
-                    segment.M[a][b] += w_a * N_master[b];
+                    {
+                      segment.D[row][b] += w_a * N[b];
+                      segment.M[row][b] += w_a * N_master[b];
+                    }
                 }
             }
         }
