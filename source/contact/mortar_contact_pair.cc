@@ -467,14 +467,14 @@ namespace rubberdyn
           const auto &s = facet_nodes[pass.gap_facets[i]];
           for (unsigned int a = 0; a < 4; ++a)
             slave_corners[a] = x[s[a]];
+          // Its plane and projected corners once for all its candidates.
+          const MortarSlaveFacet slave_facet(slave_corners);
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
               for (unsigned int k = 0; k < 4; ++k)
                 master_corners[k] = x[mc[k]];
-              if (!integrate_mortar_segment(slave_corners,
-                                            master_corners,
-                                            segment) ||
+              if (!slave_facet.integrate(master_corners, segment) ||
                   !within_margin(slave_corners,
                                  master_corners,
                                  segment,

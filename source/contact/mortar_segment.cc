@@ -2,7 +2,10 @@
 
 #include <rubberdyn/contact/mortar_segment.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "ad_number.h"
 
@@ -16,12 +19,8 @@ namespace rubberdyn
       constexpr double corner_xi[4]  = {-1., 1., 1., -1.};
       constexpr double corner_eta[4] = {-1., -1., 1., 1.};
 
-      /** A point of the auxiliary plane in its own coordinates. */
-      template <typename Number>
-      struct PlanePoint
-      {
-        Number x, y;
-      };
+      using mortar_segment_internal::BilinearMap;
+      using mortar_segment_internal::PlanePoint;
 
       /** At most 8 vertices: a quadrilateral clipped by another. */
       template <typename Number>
@@ -48,7 +47,7 @@ namespace rubberdyn
         for (unsigned int i = 0; i < p.n; ++i)
           {
             const PlanePoint<Number> &a = p.vertex[i],
-                                     &b = p.vertex[(i + 1) % p.n];
+                                     &b = p.vertex[i + 1 < p.n ? i + 1 : 0];
             area += a.x * b.y - b.x * a.y;
           }
         return 0.5 * area;
@@ -79,14 +78,24 @@ namespace rubberdyn
                  value_of(d) < -tolerance ? -1 :
                                             0;
         };
+        // Each vertex's distance (times the edge's length) once, not once
+        // as each of its two sides' ends.
+        Number distance[16];
+        int    side_of[16];
+        for (unsigned int i = 0; i < subject.n; ++i)
+          {
+            distance[i] = cross(a, b, subject.vertex[i]);
+            side_of[i]  = side(distance[i]);
+          }
         result.n = 0;
         for (unsigned int i = 0; i < subject.n; ++i)
           {
+            const unsigned int        j  = i + 1 < subject.n ? i + 1 : 0;
             const PlanePoint<Number> &p  = subject.vertex[i];
-            const PlanePoint<Number> &q  = subject.vertex[(i + 1) % subject.n];
-            const Number              dp = cross(a, b, p);
-            const Number              dq = cross(a, b, q);
-            const int                 sp = side(dp), sq = side(dq);
+            const PlanePoint<Number> &q  = subject.vertex[j];
+            const Number             &dp = distance[i];
+            const Number             &dq = distance[j];
+            const int                 sp = side_of[i], sq = side_of[j];
             if (sp >= 0)
               result.vertex[result.n++] = p;
             if (sp * sq < 0)
@@ -99,64 +108,123 @@ namespace rubberdyn
       }
 
       /**
-       * One Newton step towards the (xi, eta) at which the bilinear map of
-       * the plane points @p corner reaches @p q, from (@p xi_0, @p eta_0):
-       * the residual F = x(xi_0, eta_0) - q in the numbers of the corners
-       * (with their derivatives), the Jacobian in their values. Returns
-       * |F| (of the values).
+       * The bilinear map of the plane points @p corner: sum_a N_a x_a
+       * regrouped by powers of xi and eta, and the inverse of its affine
+       * part.
        */
       template <typename Number>
-      double
-      newton_step(const PlanePoint<Number> (&corner)[4],
-                  const PlanePoint<Number> &q,
-                  const double              xi_0,
-                  const double              eta_0,
-                  Number                   &xi,
-                  Number                   &eta)
+      void
+      make_bilinear_map(const PlanePoint<Number> (&corner)[4],
+                        BilinearMap<Number> &map)
       {
-        Number fx = -q.x, fy = -q.y;
-        double j00 = 0., j01 = 0., j10 = 0., j11 = 0.;
         for (unsigned int a = 0; a < 4; ++a)
-          {
-            const double N =
-              0.25 * (1. + corner_xi[a] * xi_0) * (1. + corner_eta[a] * eta_0);
-            const double dxi =
-              0.25 * corner_xi[a] * (1. + corner_eta[a] * eta_0);
-            const double deta =
-              0.25 * corner_eta[a] * (1. + corner_xi[a] * xi_0);
-            fx += N * corner[a].x;
-            fy += N * corner[a].y;
-            j00 += dxi * value_of(corner[a].x);
-            j01 += deta * value_of(corner[a].x);
-            j10 += dxi * value_of(corner[a].y);
-            j11 += deta * value_of(corner[a].y);
-          }
-        const double det = j00 * j11 - j01 * j10;
-        xi               = xi_0 - (j11 * fx - j01 * fy) / det;
-        eta              = eta_0 - (-j10 * fx + j00 * fy) / det;
-        return std::abs(value_of(fx)) + std::abs(value_of(fy));
+          map.corner[a] = corner[a];
+        const PlanePoint<Number> &x0 = corner[0], &x1 = corner[1],
+                                 &x2 = corner[2], &x3 = corner[3];
+        map.c[0]         = {0.25 * (x0.x + x1.x + x2.x + x3.x),
+                            0.25 * (x0.y + x1.y + x2.y + x3.y)};
+        map.c[1]         = {0.25 * (x1.x - x0.x + x2.x - x3.x),
+                            0.25 * (x1.y - x0.y + x2.y - x3.y)};
+        map.c[2]         = {0.25 * (x3.x - x0.x + x2.x - x1.x),
+                            0.25 * (x3.y - x0.y + x2.y - x1.y)};
+        map.c[3]         = {0.25 * (x0.x - x1.x + x2.x - x3.x),
+                            0.25 * (x0.y - x1.y + x2.y - x3.y)};
+        const double c1x = value_of(map.c[1].x), c1y = value_of(map.c[1].y),
+                     c2x = value_of(map.c[2].x), c2y = value_of(map.c[2].y);
+        const double det         = c1x * c2y - c2x * c1y;
+        map.affine_inverse[0][0] = c2y / det;
+        map.affine_inverse[0][1] = -c2x / det;
+        map.affine_inverse[1][0] = -c1y / det;
+        map.affine_inverse[1][1] = c1x / det;
       }
 
       /**
-       * The (xi, eta) at which the bilinear map of the plane points
-       * @p corner reaches @p q (Newton's method from the centre).
+       * One Newton step towards the (xi, eta) at which @p map reaches
+       * @p q, from (@p xi_0, @p eta_0): the residual F = x(xi_0, eta_0) - q
+       * in the numbers of the map (with their derivatives), the Jacobian
+       * J = [c_1 + c_3 eta_0, c_2 + c_3 xi_0] in its values.
+       */
+      template <typename Number>
+      void
+      newton_step(const BilinearMap<Number> &map,
+                  const PlanePoint<Number>  &q,
+                  const double               xi_0,
+                  const double               eta_0,
+                  Number                    &xi,
+                  Number                    &eta)
+      {
+        const PlanePoint<Number>(&c)[4] = map.c;
+        const double xi_eta             = xi_0 * eta_0;
+        const Number fx =
+          c[0].x - q.x + c[1].x * xi_0 + c[2].x * eta_0 + c[3].x * xi_eta;
+        const Number fy =
+          c[0].y - q.y + c[1].y * xi_0 + c[2].y * eta_0 + c[3].y * xi_eta;
+        const double j00         = value_of(c[1].x) + value_of(c[3].x) * eta_0;
+        const double j01         = value_of(c[2].x) + value_of(c[3].x) * xi_0;
+        const double j10         = value_of(c[1].y) + value_of(c[3].y) * eta_0;
+        const double j11         = value_of(c[2].y) + value_of(c[3].y) * xi_0;
+        const double inverse_det = 1. / (j00 * j11 - j01 * j10);
+        xi                       = xi_0 - (j11 * fx - j01 * fy) * inverse_det;
+        eta                      = eta_0 - (-j10 * fx + j00 * fy) * inverse_det;
+      }
+
+      /** The number of points of the quadrature rule (below). */
+      constexpr unsigned int n_rule_points = 7;
+
+      /**
+       * The (xi, eta) at which @p map reaches each of the points @p q (a
+       * triangle's quadrature points): Newton's method from the centre,
+       * whose first step lands on the solution of the affine part,
+       * (xi, eta) = [c_1 c_2]^{-1} (q - c_0) (exact for a parallelogram),
+       * taken here without evaluating the residual at the centre. Nor is
+       * the residual evaluated to stop: the map is bilinear, so after a
+       * Newton step (d_xi, d_eta) the residual is exactly F = c_3 d_xi d_eta
+       * (F(xi + d) = F(xi) + J d + c_3 d_xi d_eta and J d = -F(xi)), and a
+       * point stops where |F|_1 < @p tolerance (the same iterate as
+       * evaluating F there, up to round-off; for a parallelogram no step at
+       * all). The points are iterated side by side, each stopping on its
+       * own: their independent divisions overlap in the processor's
+       * pipeline, where one point at a time waits for each in turn.
        */
       void
-      inverse_bilinear(const PlanePoint<double> (&corner)[4],
-                       const PlanePoint<double> &q,
-                       const double              tolerance,
-                       double                   &xi,
-                       double                   &eta)
+      inverse_bilinear(const BilinearMap<double> &map,
+                       const PlanePoint<double> (&q)[n_rule_points],
+                       const double tolerance,
+                       double (&xi)[n_rule_points],
+                       double (&eta)[n_rule_points])
       {
-        xi  = 0.;
-        eta = 0.;
+        const double twist = std::abs(map.c[3].x) + std::abs(map.c[3].y);
+        // The residual |F|_1 at each point's iterate.
+        double residual[n_rule_points];
+        for (unsigned int g = 0; g < n_rule_points; ++g)
+          {
+            const double rx = q[g].x - map.c[0].x, ry = q[g].y - map.c[0].y;
+            xi[g] =
+              map.affine_inverse[0][0] * rx + map.affine_inverse[0][1] * ry;
+            eta[g] =
+              map.affine_inverse[1][0] * rx + map.affine_inverse[1][1] * ry;
+            residual[g] = twist * std::abs(xi[g] * eta[g]);
+          }
         for (unsigned int iteration = 0; iteration < 30; ++iteration)
           {
-            double next_xi, next_eta;
-            if (newton_step(corner, q, xi, eta, next_xi, next_eta) < tolerance)
+            bool converged = true;
+            for (unsigned int g = 0; g < n_rule_points; ++g)
+              converged &= residual[g] < tolerance;
+            if (converged)
               return;
-            xi  = next_xi;
-            eta = next_eta;
+            for (unsigned int g = 0; g < n_rule_points; ++g)
+              {
+                double next_xi, next_eta;
+                newton_step(map, q[g], xi[g], eta[g], next_xi, next_eta);
+                // (A point that has converged keeps its iterate.)
+                const bool done = residual[g] < tolerance;
+                residual[g] =
+                  done ?
+                    residual[g] :
+                    twist * std::abs((next_xi - xi[g]) * (next_eta - eta[g]));
+                xi[g]  = done ? xi[g] : next_xi;
+                eta[g] = done ? eta[g] : next_eta;
+              }
           }
       }
 
@@ -168,37 +236,41 @@ namespace rubberdyn
        * iterating with the numbers).
        */
       void
-      inverse_bilinear(const PlanePoint<ADNumber> (&corner)[4],
-                       const PlanePoint<ADNumber> &q,
-                       const double                tolerance,
-                       ADNumber                   &xi,
-                       ADNumber                   &eta)
+      inverse_bilinear(const BilinearMap<ADNumber> &map,
+                       const PlanePoint<ADNumber> (&q)[n_rule_points],
+                       const double tolerance,
+                       ADNumber (&xi)[n_rule_points],
+                       ADNumber (&eta)[n_rule_points])
       {
-        PlanePoint<double> corner_value[4];
+        BilinearMap<double> value;
         for (unsigned int a = 0; a < 4; ++a)
-          corner_value[a] = {corner[a].x.val(), corner[a].y.val()};
-        double xi_0, eta_0;
-        inverse_bilinear(corner_value,
-                         {q.x.val(), q.y.val()},
-                         tolerance,
-                         xi_0,
-                         eta_0);
-        newton_step(corner, q, xi_0, eta_0, xi, eta);
+          value.c[a] = {map.c[a].x.val(), map.c[a].y.val()};
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            value.affine_inverse[i][j] = map.affine_inverse[i][j];
+        PlanePoint<double> q_value[n_rule_points];
+        for (unsigned int g = 0; g < n_rule_points; ++g)
+          q_value[g] = {q[g].x.val(), q[g].y.val()};
+        double xi_0[n_rule_points], eta_0[n_rule_points];
+        inverse_bilinear(value, q_value, tolerance, xi_0, eta_0);
+        for (unsigned int g = 0; g < n_rule_points; ++g)
+          newton_step(map, q[g], xi_0[g], eta_0[g], xi[g], eta[g]);
       }
 
       /** Dunavant's 7-point rule: barycentric points, weights (sum 1). */
       constexpr double rule_a1 = 0.059715871789770, rule_b1 = 0.470142064105115,
                        rule_w1 = 0.132394152788506;
       constexpr double rule_a2 = 0.797426985353087, rule_b2 = 0.101286507323456,
-                       rule_w2          = 0.125939180544827;
-      constexpr double rule_point[7][3] = {{1. / 3., 1. / 3., 1. / 3.},
-                                           {rule_a1, rule_b1, rule_b1},
-                                           {rule_b1, rule_a1, rule_b1},
-                                           {rule_b1, rule_b1, rule_a1},
-                                           {rule_a2, rule_b2, rule_b2},
-                                           {rule_b2, rule_a2, rule_b2},
-                                           {rule_b2, rule_b2, rule_a2}};
-      constexpr double rule_weight[7] =
+                       rule_w2                      = 0.125939180544827;
+      constexpr double rule_point[n_rule_points][3] = {
+        {1. / 3., 1. / 3., 1. / 3.},
+        {rule_a1, rule_b1, rule_b1},
+        {rule_b1, rule_a1, rule_b1},
+        {rule_b1, rule_b1, rule_a1},
+        {rule_a2, rule_b2, rule_b2},
+        {rule_b2, rule_a2, rule_b2},
+        {rule_b2, rule_b2, rule_a2}};
+      constexpr double rule_weight[n_rule_points] =
         {0.225, rule_w1, rule_w1, rule_w1, rule_w2, rule_w2, rule_w2};
     } // namespace
 
@@ -215,111 +287,199 @@ namespace rubberdyn
 
 
     template <typename Number>
+    MortarSlaveFacetOf<Number>::MortarSlaveFacetOf(
+      const FacetCornersOf<Number> &slave)
+    {
+      using Vector = Tensor<1, 3, Number>;
+      // The auxiliary plane: through the slave corners' mean, normal to
+      // the slave facet's diagonals' cross product.
+      for (const Point<3, Number> &x : slave)
+        centre += 0.25 * x;
+      normal      = cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
+      normal_norm = normal.norm();
+      degenerate  = !(value_of(normal_norm) > 0.);
+      if (degenerate)
+        return;
+      normal /= normal_norm;
+      // In-plane axes: e1 along the first edge's projection.
+      e1 = slave[1] - slave[0];
+      e1 -= (e1 * normal) * normal;
+      e1 /= e1.norm();
+      e2 = cross_product_3d(normal, e1);
+
+      PlanePoint<Number> corner[4];
+      for (unsigned int a = 0; a < 4; ++a)
+        {
+          const Vector r = slave[a] - centre;
+          corner[a]      = {r * e1, r * e2};
+        }
+      make_bilinear_map(corner, map);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -std::numeric_limits<double>::max();
+        }
+      for (const PlanePoint<Number> &x : corner)
+        {
+          lower[0] = std::min(lower[0], value_of(x.x));
+          upper[0] = std::max(upper[0], value_of(x.x));
+          lower[1] = std::min(lower[1], value_of(x.y));
+          upper[1] = std::max(upper[1], value_of(x.y));
+        }
+    }
+
+
+
+    template <typename Number>
+    bool
+    MortarSlaveFacetOf<Number>::integrate(const FacetCornersOf<Number> &master,
+                                          MortarSegmentOf<Number>      &segment,
+                                          const unsigned int row) const
+    {
+      if (degenerate)
+        return false;
+      const Tensor<1, 3, Number> master_normal =
+        cross_product_3d(master[2] - master[0], master[3] - master[1]);
+      if (!(value_of(master_normal * normal) < 0.))
+        return false;
+
+      PlanePoint<Number> master_corner[4];
+      for (unsigned int k = 0; k < 4; ++k)
+        {
+          const Tensor<1, 3, Number> r = master[k] - centre;
+          master_corner[k]             = {r * e1, r * e2};
+        }
+      double master_lower[2] = {value_of(master_corner[0].x),
+                                value_of(master_corner[0].y)};
+      double master_upper[2] = {master_lower[0], master_lower[1]};
+      for (unsigned int k = 1; k < 4; ++k)
+        {
+          const double x  = value_of(master_corner[k].x),
+                       y  = value_of(master_corner[k].y);
+          master_lower[0] = std::min(master_lower[0], x);
+          master_upper[0] = std::max(master_upper[0], x);
+          master_lower[1] = std::min(master_lower[1], y);
+          master_upper[1] = std::max(master_upper[1], y);
+        }
+      // Most candidates of a slave facet (those within the capture margin
+      // of its bounding box) do not overlap it in the plane: those whose
+      // bounding box is apart from the slave's by more than a margin far
+      // above the clipping's tolerance (1e-10 of an edge's length) are
+      // dropped before clipping; clipping would leave no area.
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double margin =
+            1e-8 * (upper[d] - lower[d] + master_upper[d] - master_lower[d]);
+          if (master_upper[d] < lower[d] - margin ||
+              master_lower[d] > upper[d] + margin)
+            return false;
+        }
+
+      // The slave quadrilateral clipped by each edge of the master one,
+      // which runs clockwise in the slave's plane (it faces the other way).
+      Polygon<Number>  polygons[2];
+      Polygon<Number> *overlap = &polygons[0], *scratch = &polygons[1];
+      overlap->n = 4;
+      for (unsigned int a = 0; a < 4; ++a)
+        overlap->vertex[a] = map.corner[a];
+      for (unsigned int k = 0; k < 4 && overlap->n > 0; ++k)
+        {
+          // Counter-clockwise master edge: from corner k+1 to corner k.
+          clip(*overlap,
+               master_corner[(k + 1) % 4],
+               master_corner[k],
+               *scratch);
+          std::swap(overlap, scratch);
+        }
+      if (overlap->n < 3)
+        return false;
+      // Area of the projected slave quadrilateral.
+      const double slave_area = 0.5 * value_of(normal_norm);
+      const Number area       = signed_area(*overlap);
+      if (!(value_of(area) > 1e-12 * slave_area))
+        return false;
+
+      BilinearMap<Number> master_map;
+      make_bilinear_map(master_corner, master_map);
+      for (unsigned int a = 0; a < 4; ++a)
+        for (unsigned int b = 0; b < 4; ++b)
+          segment.D[a][b] = segment.M[a][b] = 0.;
+      segment.area           = area;
+      const double tolerance = 1e-14 * std::sqrt(slave_area);
+      // D is symmetric: with all rows, its upper triangle only, mirrored
+      // below at the end.
+      const bool all_rows = row >= 4;
+      // The convex overlap as a fan of triangles from its first vertex.
+      const PlanePoint<Number> &apex = overlap->vertex[0];
+      for (unsigned int i = 1; i + 1 < overlap->n; ++i)
+        {
+          const PlanePoint<Number> &p             = overlap->vertex[i];
+          const PlanePoint<Number> &q             = overlap->vertex[i + 1];
+          const Number              triangle_area = 0.5 * cross(apex, p, q);
+          if (value_of(triangle_area) <= 0.)
+            continue;
+          PlanePoint<Number> x[n_rule_points];
+          for (unsigned int g = 0; g < n_rule_points; ++g)
+            x[g] = {rule_point[g][0] * apex.x + rule_point[g][1] * p.x +
+                      rule_point[g][2] * q.x,
+                    rule_point[g][0] * apex.y + rule_point[g][1] * p.y +
+                      rule_point[g][2] * q.y};
+          Number xi[n_rule_points], eta[n_rule_points];
+          Number master_xi[n_rule_points], master_eta[n_rule_points];
+          inverse_bilinear(map, x, tolerance, xi, eta);
+          inverse_bilinear(master_map, x, tolerance, master_xi, master_eta);
+          for (unsigned int g = 0; g < n_rule_points; ++g)
+            {
+              Number N[4], N_master[4];
+              facet_shape_values(xi[g], eta[g], N);
+              facet_shape_values(master_xi[g], master_eta[g], N_master);
+              const Number w = triangle_area * rule_weight[g];
+              // (Two loops with fixed bounds, which the compiler unrolls.)
+              if (all_rows)
+                for (unsigned int a = 0; a < 4; ++a)
+                  {
+                    const Number w_a = w * N[a];
+                    for (unsigned int b = a; b < 4; ++b)
+                      segment.D[a][b] += w_a * N[b];
+                    for (unsigned int b = 0; b < 4; ++b)
+                      segment.M[a][b] += w_a * N_master[b];
+                  }
+              else
+                {
+                  const Number w_a = w * N[row];
+                  for (unsigned int b = 0; b < 4; ++b)
+                    {
+                      segment.D[row][b] += w_a * N[b];
+                      segment.M[row][b] += w_a * N_master[b];
+                    }
+                }
+            }
+        }
+      if (all_rows)
+        for (unsigned int a = 1; a < 4; ++a)
+          for (unsigned int b = 0; b < a; ++b)
+            segment.D[a][b] = segment.D[b][a];
+      return true;
+    }
+
+
+
+    template <typename Number>
     bool
     integrate_mortar_segment(const FacetCornersOf<Number> &slave,
                              const FacetCornersOf<Number> &master,
                              MortarSegmentOf<Number>      &segment,
                              const unsigned int            row)
     {
-      const unsigned int first_row = row < 4 ? row : 0;
-      const unsigned int end_row   = row < 4 ? row + 1 : 4;
-      using Vector                 = Tensor<1, 3, Number>;
-      // The auxiliary plane: through the slave corners' mean, normal to
-      // the slave facet's diagonals' cross product.
-      Vector centre;
-      for (const Point<3, Number> &x : slave)
-        centre += 0.25 * x;
-      Vector normal =
-        cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
-      const Number normal_norm = normal.norm();
-      if (!(value_of(normal_norm) > 0.))
-        return false;
-      normal /= normal_norm;
-      const Vector master_normal =
-        cross_product_3d(master[2] - master[0], master[3] - master[1]);
-      if (!(value_of(master_normal * normal) < 0.))
-        return false;
-      // In-plane axes: e1 along the first edge's projection.
-      Vector e1 = slave[1] - slave[0];
-      e1 -= (e1 * normal) * normal;
-      e1 /= e1.norm();
-      const Vector e2 = cross_product_3d(normal, e1);
-
-      PlanePoint<Number> slave_corner[4], master_corner[4];
-      for (unsigned int a = 0; a < 4; ++a)
-        {
-          slave_corner[a]  = {(slave[a] - centre) * e1,
-                              (slave[a] - centre) * e2};
-          master_corner[a] = {(master[a] - centre) * e1,
-                              (master[a] - centre) * e2};
-        }
-
-      // The slave quadrilateral clipped by each edge of the master one,
-      // which runs clockwise in the slave's plane (it faces the other way).
-      Polygon<Number> overlap, scratch;
-      overlap.n = 4;
-      for (unsigned int a = 0; a < 4; ++a)
-        overlap.vertex[a] = slave_corner[a];
-      for (unsigned int k = 0; k < 4 && overlap.n > 0; ++k)
-        {
-          // Counter-clockwise master edge: from corner k+1 to corner k.
-          clip(overlap, master_corner[(k + 1) % 4], master_corner[k], scratch);
-          overlap = scratch;
-        }
-      if (overlap.n < 3)
-        return false;
-      // Area of the projected slave quadrilateral.
-      const double slave_area = 0.5 * value_of(normal_norm);
-      const Number area       = signed_area(overlap);
-      if (!(value_of(area) > 1e-12 * slave_area))
-        return false;
-
-      for (unsigned int a = 0; a < 4; ++a)
-        for (unsigned int b = 0; b < 4; ++b)
-          segment.D[a][b] = segment.M[a][b] = 0.;
-      segment.area           = area;
-      const double tolerance = 1e-14 * std::sqrt(slave_area);
-      // The convex overlap as a fan of triangles from its first vertex.
-      const PlanePoint<Number> &apex = overlap.vertex[0];
-      for (unsigned int i = 1; i + 1 < overlap.n; ++i)
-        {
-          const PlanePoint<Number> &p             = overlap.vertex[i];
-          const PlanePoint<Number> &q             = overlap.vertex[i + 1];
-          const Number              triangle_area = 0.5 * cross(apex, p, q);
-          if (value_of(triangle_area) <= 0.)
-            continue;
-          for (unsigned int g = 0; g < 7; ++g)
-            {
-              const PlanePoint<Number> x = {rule_point[g][0] * apex.x +
-                                              rule_point[g][1] * p.x +
-                                              rule_point[g][2] * q.x,
-                                            rule_point[g][0] * apex.y +
-                                              rule_point[g][1] * p.y +
-                                              rule_point[g][2] * q.y};
-              Number                   xi, eta, N[4], N_master[4];
-              inverse_bilinear(slave_corner, x, tolerance, xi, eta);
-              facet_shape_values(xi, eta, N);
-              inverse_bilinear(master_corner, x, tolerance, xi, eta);
-              facet_shape_values(xi, eta, N_master);
-              const Number w = triangle_area * rule_weight[g];
-              for (unsigned int a = first_row; a < end_row; ++a)
-                {
-                  const Number w_a = w * N[a];
-                  for (unsigned int b = 0; b < 4; ++b)
-                    {
-                      segment.D[a][b] += w_a * N[b];
-                      segment.M[a][b] += w_a * N_master[b];
-                    }
-                }
-            }
-        }
-      return true;
+      return MortarSlaveFacetOf<Number>(slave).integrate(master, segment, row);
     }
 
 
 
     template void
     facet_shape_values(const double &, const double &, double (&)[4]);
+    template class MortarSlaveFacetOf<double>;
+    template class MortarSlaveFacetOf<ADNumber>;
     template bool
     integrate_mortar_segment(const FacetCornersOf<double> &,
                              const FacetCornersOf<double> &,

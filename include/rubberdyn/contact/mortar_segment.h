@@ -2,6 +2,7 @@
 #define rubberdyn_contact_mortar_segment_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <array>
 
@@ -54,11 +55,12 @@ namespace rubberdyn
      * its corners); the projected master quadrilateral clips the slave one
      * (Sutherland-Hodgman, both convex); the overlap polygon is cut into
      * a fan of triangles from its first vertex, each integrated by the
-     * 7-point degree-5
-     * rule (Dunavant 1985) at points mapped back to each facet's (xi, eta)
-     * by Newton's method on the projected bilinear map. Exact for flat
-     * parallelogram facets, whose products N_a N_b are quartic in the
-     * plane's coordinates.
+     * 7-point degree-5 rule (Dunavant 1985) at points mapped back to each
+     * facet's (xi, eta) by Newton's method on the projected bilinear map,
+     * started from the inverse of its affine part (exact for a
+     * parallelogram: no Newton step there). Exact for flat parallelogram
+     * facets, whose products N_a N_b are quartic in the plane's
+     * coordinates.
      *
      * The master facet must face the slave one (its outward normal
      * against the slave's); a master facet seen from behind, or no overlap,
@@ -78,7 +80,70 @@ namespace rubberdyn
     integrate_mortar_segment(const FacetCornersOf<Number> &slave,
                              const FacetCornersOf<Number> &master,
                              MortarSegmentOf<Number>      &segment,
-                             const unsigned int row = 4);
+                             const unsigned int            row = 4);
+
+    namespace mortar_segment_internal
+    {
+      /** A point of a slave facet's auxiliary plane in its coordinates. */
+      template <typename Number>
+      struct PlanePoint
+      {
+        Number x, y;
+      };
+
+      /**
+       * A facet's bilinear map projected onto the auxiliary plane, written
+       * as x(xi, eta) = c_0 + c_1 xi + c_2 eta + c_3 xi eta (c_3 = 0 for a
+       * parallelogram), with the inverse of its affine part [c_1 c_2] (of
+       * the values): what the inverse map needs at every quadrature point,
+       * computed once per facet.
+       */
+      template <typename Number>
+      struct BilinearMap
+      {
+        /** The corners (FacetCorners' order). */
+        PlanePoint<Number> corner[4];
+        /** c_0, c_1, c_2, c_3. */
+        PlanePoint<Number> c[4];
+        /** [c_1 c_2]^{-1}. */
+        double affine_inverse[2][2];
+      };
+    } // namespace mortar_segment_internal
+
+    /**
+     * A slave facet prepared for integrate_mortar_segment() against each
+     * of its candidate master facets: its auxiliary plane, its projected
+     * corners and bilinear map, computed once instead of once per
+     * candidate. integrate() gives what integrate_mortar_segment() gives,
+     * to the last bit.
+     */
+    template <typename Number>
+    class MortarSlaveFacetOf
+    {
+    public:
+      explicit MortarSlaveFacetOf(const FacetCornersOf<Number> &slave);
+
+      /** integrate_mortar_segment(slave, @p master, @p segment, @p row). */
+      bool
+      integrate(const FacetCornersOf<Number> &master,
+                MortarSegmentOf<Number>      &segment,
+                const unsigned int            row = 4) const;
+
+    private:
+      /** True for a facet without area (no segment then). */
+      bool degenerate;
+      /** The auxiliary plane: centre, unit normal and in-plane axes. */
+      Tensor<1, 3, Number> centre, normal, e1, e2;
+      /** The length of the diagonals' cross product: twice the area. */
+      Number normal_norm;
+      /** The facet in the plane. */
+      mortar_segment_internal::BilinearMap<Number> map;
+      /** Its bounding box in the plane (values). */
+      double lower[2], upper[2];
+    };
+
+    /** The slave facet prepared in double precision. */
+    using MortarSlaveFacet = MortarSlaveFacetOf<double>;
 
     /** The facet's shape functions at (xi, eta) (FacetCorners). */
     template <typename Number>
