@@ -15,7 +15,9 @@ namespace rubberdyn
       prm.enter_subsection("Contact");
       prm.declare_entry("Penalty scale factor", "0.1", Patterns::Double(0.),
                         "Scale s of the penalty stiffness k = s K A^2 / V of "
-                        "each contact face (-), as LS-DYNA's SLSFAC.");
+                        "each contact face (-), as LS-DYNA's SLSFAC, with "
+                        "the face's current area A and its element's "
+                        "current volume V (K: bulk modulus).");
       prm.leave_subsection();
     }
 

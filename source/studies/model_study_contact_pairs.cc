@@ -80,7 +80,8 @@ namespace rubberdyn
                               Patterns::Double(),
                               "s (-, > 0): the penalty per area is s times "
                               "the smaller of the two sides' mean bulk "
-                              "modulus over element thickness (GPa/mm).");
+                              "modulus over element thickness V/A (GPa/mm), "
+                              "A the facets' current area.");
             prm.declare_entry("Two-pass",
                               "false",
                               Patterns::Bool(),

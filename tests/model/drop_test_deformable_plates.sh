@@ -5,7 +5,7 @@
 # plate the 5 kg impactor at 2 m/s, no gravity) against the same test with
 # rigid plates (parameter_files/drop_test_model.prm without gravity: rigid
 # surfaces, node-to-surface penalty at Penalty scale factor 10, where its
-# force has converged in the penalty: 2.2906 kN at 3, 2.2976 kN at 10).
+# force has converged in the penalty).
 # Issue 8's bounds, checked:
 #  - the force at maximum compression (where the impactor's momentum
 #    crosses zero, interpolated between rows 0.01 ms apart), measured as
@@ -19,8 +19,9 @@
 #    compression (the rigid impactor's travel);
 #  - the energy error of the deformable run at most 1 % of the energy
 #    through the deformable parts (its log).
-# Measured: -0.10 % (2.2953 against 2.2976 kN), penetration 0.23 % of the
-# compression, energy error 0.16 %. The radius profile at maximum
+# Measured: -0.63 % (2.2940 against 2.3085 kN), penetration 0.13 % of the
+# compression, energy error 0.10 % (2026-12-03, penalty of the current
+# geometry). The radius profile at maximum
 # compression (tests/model/radius_profile.py on the field output at 9.85
 # ms) is printed for information (doc/drop_test.md, "End flare").
 # Usage: drop_test_deformable_plates.sh EXECUTABLE SOURCE_DIR NPROC
