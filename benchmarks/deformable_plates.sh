@@ -12,14 +12,7 @@
 # part, and the pairs' candidate pairs and searches.
 # Usage: benchmarks/deformable_plates.sh [BUILD_DIR] [WORK_DIR] [RANKS...]
 set -euo pipefail
-build=$(cd "${1:-build}" && pwd)
-work=${2:-$(mktemp -d)}
-# (Both optional: shift what was given, so that the ranks stay empty.)
-shift $(( $# < 2 ? $# : 2 ))
-ranks=${*:-1 2}
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
-mkdir -p "$work"
-cd "$work"
+source "$(dirname "$0")/arguments.sh"
 
 # model REFINEMENT DIRECTORY: the drop test, short and without fields.
 model() {

@@ -13,13 +13,7 @@
 # growth check.
 # Usage: benchmarks/mortar_contact.sh [BUILD_DIR] [WORK_DIR] [RANKS...]
 set -euo pipefail
-build=$(cd "${1:-build}" && pwd)
-work=${2:-$(mktemp -d)}
-shift 2 || true
-ranks=${*:-1 2}
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
-mkdir -p "$work"
-cd "$work"
+source "$(dirname "$0")/arguments.sh"
 
 # model REFINEMENT WITH_PAIR DIRECTORY: the sliding block.
 model() {

@@ -30,6 +30,7 @@
 # Usage: penalty_insensitivity.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
+source "$source_dir/tests/model/script_helpers.sh"
 
 # run CASE SCALE END_TIME: the example without gravity, in CASE_SCALE/.
 run() {
@@ -42,11 +43,7 @@ run() {
       "$source_dir/parameter_files/drop_test_$1.prm" > "$name.prm"
   printf 'subsection Contact\n  set Penalty scale factor = %s\nend\n' "$2" >> "$name.prm"
   rm -rf "$name"
-  if [ "$nproc" -gt 1 ]; then
-    mpirun --oversubscribe -np "$nproc" "$exe" "$name.prm" > "$name.log"
-  else
-    "$exe" "$name.prm" > "$name.log"
-  fi
+  run_prm "$name.prm" "$name.log"
 }
 
 # at_maximum CSV: "travel force compression" at the largest travel.
