@@ -263,16 +263,23 @@ namespace rubberdyn
           pass.shown_pressure.assign(n_nodes, 0.);
           pass.shown_gap.assign(n_nodes, 0.);
         }
-      set_penalty(false);
+      // (x is the reference configuration here.)
+      area_now.resize(facets.size());
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        area_now[f] = current_facet_area(f);
+      reference_area = area_now;
+      set_penalty();
     }
 
 
 
     void
-    MortarContactPair::Implementation::set_penalty(const bool current)
+    MortarContactPair::Implementation::set_penalty()
     {
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        area_now[f] = current_facet_area(f);
       // The smaller of the two sides' mean stiffness per area, K A / V, with
-      // A the facet's area now or in the reference configuration.
+      // A the facet's area now.
       double mean_stiffness[2] = {0., 0.};
       for (unsigned int side = 0; side < 2; ++side)
         {
@@ -280,8 +287,7 @@ namespace rubberdyn
             side == 0 ? passes[0].slave_facets : passes[0].master_facets;
           for (const unsigned int f : side_facets)
             mean_stiffness[side] +=
-              facets[f].stiffness *
-              (current ? current_facet_area(f) / facet_area(f) : 1.);
+              facets[f].stiffness * (area_now[f] / reference_area[f]);
           if (!side_facets.empty())
             mean_stiffness[side] /= side_facets.size();
         }
@@ -297,12 +303,8 @@ namespace rubberdyn
           for (const unsigned int side : {0u, 1u})
             for (const unsigned int f :
                  side == 0 ? pass.slave_facets : pass.master_facets)
-              {
-                const double A =
-                  current ? current_facet_area(f) : facet_area(f);
-                for (const unsigned int node : facet_nodes[f])
-                  node_stiffness[node] += pass.penalty * 0.25 * A;
-              }
+              for (const unsigned int node : facet_nodes[f])
+                node_stiffness[node] += pass.penalty * 0.25 * area_now[f];
         }
       if (!node_mass.empty())
         {
@@ -601,7 +603,7 @@ namespace rubberdyn
         }
       if (I.follow_pending)
         {
-          I.set_penalty(true);
+          I.set_penalty();
           I.follow_pending = false;
         }
       // What the penalty updates since the accepted state added to the

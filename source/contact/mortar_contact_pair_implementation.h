@@ -315,14 +315,14 @@ namespace rubberdyn
 
       /**
        * The passes' penalties and the nodes' stiffness (node_stiffness,
-       * and with it the stable step) from the facets' areas now
-       * (@p current) or in the reference configuration: each facet's
-       * stiffness K A / V grows with its area (V is the reference volume:
-       * the pair holds the facets, not their cells; for rubber, nearly
-       * incompressible, it is the current one within the volume strain).
+       * and with it the stable step) from the facets' areas at the
+       * positions x: each facet's stiffness K A / V grows with its area (V
+       * is the reference volume: the pair holds the facets, not their
+       * cells; for rubber, nearly incompressible, it is the current one
+       * within the volume strain).
        */
       void
-      set_penalty(const bool current);
+      set_penalty();
 
       /** Area of facet @p f now (mm^2). */
       double
@@ -333,7 +333,10 @@ namespace rubberdyn
                cross_product_3d(x[c[2]] - x[c[0]], x[c[3]] - x[c[1]]).norm();
       }
 
-      /** Whether the next add_forces() calls set_penalty(true). */
+      /** Each facet's area in the reference configuration (mm^2), and
+       * scratch for its area now. */
+      std::vector<double> reference_area, area_now;
+      /** Whether the next add_forces() calls set_penalty(). */
       bool follow_pending = false;
       /** The divisor of each pass's penalty: 2 for two-pass and self-contact
        * pairs (symmetric treatment), else 1. */
@@ -345,20 +348,6 @@ namespace rubberdyn
        * state and in the last evaluation, this rank's booked nodes (J).
        */
       double accepted_stiffness_energy = 0., trial_stiffness_energy = 0.;
-
-      /** Area of facet @p f in the reference configuration (mm^2). */
-      double
-      facet_area(const unsigned int f) const
-      {
-        const GatheredFacet &facet = facets[f];
-        Tensor<1, 3>         d1, d2;
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            d1[d] = facet.X[2][d] - facet.X[0][d];
-            d2[d] = facet.X[3][d] - facet.X[1][d];
-          }
-        return 0.5 * cross_product_3d(d1, d2).norm();
-      }
 
       std::vector<Pass> passes;
       /** Capture margin of the search (mm). */

@@ -1516,6 +1516,11 @@ namespace rubberdyn
                       I.parts->place_nodes(poses_trial, u_trial);
                     }
                   u_trial.update_ghost_values();
+                  // The predictor takes most of the step's motion: the
+                  // penalty of its geometry is close to the converged
+                  // one's, and is held from there on.
+                  if (predictor && follows_geometry)
+                    I.follow_geometry();
                   delta_trial = shortening;
                   for (unsigned int s = 0; s < shortening.size(); ++s)
                     delta_trial[s] +=
@@ -1546,14 +1551,6 @@ namespace rubberdyn
               std::swap(r, r_trial);
               shortening.swap(delta_trial);
               part_poses.swap(poses_trial);
-              // The predictor has taken most of the step's motion: the
-              // penalty of its geometry is close to the converged one's,
-              // so that the update on convergence below changes little.
-              if (predictor && follows_geometry)
-                {
-                  I.follow_geometry();
-                  I.evaluate(u, shortening, part_poses, t_new, t_new, r);
-                }
 
               const double scale =
                 std::max({r.reaction_norm, r.load_norm, s.residual_floor});
