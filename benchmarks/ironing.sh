@@ -57,24 +57,59 @@
 # budget. It does not pass issue 8's ironing acceptance as worded (the
 # die's reaction is mu plus ploughing, 9.6 % above mu, and drifts by 4.1 %
 # with the die's distance from the slab's ends; doc/contact.md, "Ironing").
-# Usage (in an empty directory): benchmarks/ironing.sh EXECUTABLE SOURCE_DIR [NPROC]
+# The longer slab (SLAB_LENGTH, e.g. 18; the default 9 is the reference's):
+# both meshes are made with gmsh from meshes/ironing.geo and
+# ironing_slab.geo with the same 0.1 elements (gmsh -setnumber L, nx) in
+# the working directory, and the load path runs to its end, t = 1.5 (a
+# slide of 4.0, the reference's); the die's leading edge then stops 8.9
+# short of the slab's right end. Without that end the ratio does not
+# drift back down: it rises towards its steady value as the ploughing
+# builds up, by steps that shrink geometrically (measured on L = 18, every
+# 0.154 of slide: +0.0018 at a slide of 1.6, +0.0006 at 2.7, +0.0002 at
+# 3.9; 0.3296 at a slide of 1.6, 0.3396 at 3.9), so the steady phase is
+# taken from a slide of 3.0 (t = 1.175) to 4.0, and there the raw
+# max - min of the ratio, drift included, is bounded by the issue's 2 % of
+# the mean as well. Newton: at most 12 iterations per step (the pressing
+# step at t = 0.15 takes 11 on the longer slab).
+# Usage (in an empty directory):
+#   benchmarks/ironing.sh EXECUTABLE SOURCE_DIR [NPROC] [SLAB_LENGTH]
 set -euo pipefail
-exe=$1; source_dir=$2; nproc=${3:-1}
+exe=$1; source_dir=$2; nproc=${3:-1}; slab_length=${4:-9}
+t_end=1.3; t_start=0.6875; raw_bound=1e9; newton_cap=10
+if [ "$slab_length" != 9 ]; then
+  t_end=1.5; t_start=1.175; raw_bound=0.02; newton_cap=12
+  elements=$(awk -v L="$slab_length" 'BEGIN { printf "%d", L * 10 + 0.5 }')
+  for geo in ironing ironing_slab; do
+    # The shipped meshes' gmsh options (parameter_files/meshes/regenerate.sh).
+    HOME=$(mktemp -d) gmsh "$source_dir/parameter_files/meshes/$geo.geo" -3 \
+      -nopopup -v 1 -nt 1 -format msh22 -setnumber Mesh.Binary 0 \
+      -setnumber Mesh.SaveAll 0 -setnumber Mesh.SaveParametric 0 \
+      -setnumber L "$slab_length" -setnumber nx "$elements" -o "$PWD/$geo.msh"
+  done
+fi
+# example_append MESH: the lines that put the longer slab's MESH and end
+# time into a run_example.sh run (none for the reference's slab).
+example_append() {
+  if [ "$slab_length" != 9 ]; then
+    printf 'subsection Mesh\n  set Mesh file = %s\nend\n' "$PWD/$1.msh"
+    printf 'subsection Time integration\n  set Quasi-static end time = %s\nend\n' "$t_end"
+  fi
+}
 
 # statistics CSV FX FZ: mean, raw (max - min) / mean and (max - min) / mean
 # of the residual about a least-squares cubic in the slide, over the steady
-# phase, of |FX| / |FZ|; exits 1 if the run did not reach t = 1.3.
+# phase, of |FX| / |FZ|; exits 1 if the run did not reach t_end.
 statistics() {
-  awk -F, -v fx="$2" -v fz="$3" '
+  awk -F, -v fx="$2" -v fz="$3" -v t_end="$t_end" -v t_start="$t_start" '
     BEGIN { n = 0 }
     NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     { t_last = $1 }
-    $1 >= 0.6875 - 1e-9 {
+    $1 >= t_start - 1e-9 {
       s[n] = 4 * ($1 - 0.2) / 1.3
       r[n] = ($c[fx] < 0 ? -$c[fx] : $c[fx]) / ($c[fz] < 0 ? -$c[fz] : $c[fz])
       sum += r[n]; ++n }
     END {
-      if (n < 2 || t_last < 1.3 - 1e-9) { printf "the run ended at t = %s\n", t_last; exit 1 }
+      if (n < 2 || t_last < t_end - 1e-9) { printf "the run ended at t = %s\n", t_last; exit 1 }
       mean = sum / n; lo = hi = r[0]
       for (k = 0; k < n; ++k) { if (r[k] < lo) lo = r[k]; if (r[k] > hi) hi = r[k] }
       # Normal equations of the cubic fit in x = slide - 2.44, by Gauss.
@@ -92,19 +127,20 @@ statistics() {
 }
 
 SECONDS=0
-bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \
+EXAMPLE_APPEND=$(example_append ironing) \
+  bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \
   ironing 1 0 "$nproc" > log.txt
 mortar_seconds=$SECONDS
 stats=$(statistics ironing/time_history.csv press_force_x press_force_z) ||
   { echo "mortar: $stats"; exit 1; }
 read -r n mean lo hi raw detrended <<< "$stats"
-awk -v n="$n" -v mean="$mean" -v lo="$lo" -v hi="$hi" -v raw="$raw" -v d="$detrended" -v s="$mortar_seconds" 'BEGIN {
+awk -v n="$n" -v mean="$mean" -v lo="$lo" -v hi="$hi" -v raw="$raw" -v d="$detrended" -v s="$mortar_seconds" -v raw_bound="$raw_bound" 'BEGIN {
   printf "mortar (%d s): %d steady rows, |Fx|/|Fz| mean %.5f (mu %+.2f %%), min %.5f, max %.5f, max - min %.2f %% of the mean, about its cubic trend %.3f %%\n", s, n, mean, 100 * (mean / 0.3 - 1), lo, hi, 100 * raw, 100 * d
-  exit !(mean > 0.3 && mean < 1.15 * 0.3 && d < 0.02) }' || { echo "mortar: the die's reaction ratio fails"; exit 1; }
+  exit !(mean > 0.3 && mean < 1.15 * 0.3 && d < 0.02 && raw < raw_bound) }' || { echo "mortar: the die's reaction ratio fails"; exit 1; }
 awk -F, '
   function abs(x) { return x < 0 ? -x : x }
   NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
-  $1 >= 0.6875 - 1e-9 {
+  $1 >= t_start - 1e-9 {
     N = $c["ironing_normal_force"]; T = $c["ironing_tangential_force"]
     active = $c["ironing_active_nodes"]; slipping = $c["ironing_slipping_nodes"]
     e = abs(T / N / 0.3 - 1); if (e > worst) worst = e
@@ -117,10 +153,11 @@ awk -F, '
   END {
     printf "mortar pair: T / N = mu to %.2g relative, every active node slipping; die out of balance by %.2g of Fz\n", worst, qworst
     exit bad }' ironing/time_history.csv
-bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-4 1e4 10 1e-9
+bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-4 1e4 "$newton_cap" 1e-9
 
 SECONDS=0
-bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \
+EXAMPLE_APPEND=$(example_append ironing_slab) \
+  bash "$source_dir/tests/model/run_example.sh" "$exe" "$source_dir" \
   ironing_rigid_die 1 0 "$nproc" > log_rigid.txt
 stats=$(statistics ironing_rigid_die/time_history.csv die_force_x die_force_z) ||
   { echo "node-to-surface: $stats"; exit 1; }

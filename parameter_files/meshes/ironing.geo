@@ -26,10 +26,12 @@
 // face r = 2.8 (driven), 5 = the face y = 0 (both), 6 = the face y = t
 // (both), 7 = the other faces (the slab's ends x = 0 and x = 9, the die's
 // two edges).
-DefineConstant[ with_die = 1 ];
-L = 9.;         // slab length (x)
+// L and nx can be set from the command line (gmsh -setnumber L 18
+// -setnumber nx 180: benchmarks/ironing.sh's longer slab, the same 0.1
+// elements, for a stretch of steady sliding free of the slab's ends).
+DefineConstant[ with_die = 1, L = 9., nx = 90 ];
+// L: slab length (x); nx: slab elements along x
 H = 3.;         // slab height (z)
-nx = 90;        // slab elements along x
 nz = 30;        // slab elements along z
 t = 0.1;        // slice thickness (y)
 R = 3.;         // die: outer radius
