@@ -59,6 +59,14 @@
 // The shifts are whole numbers and the parts' base heights are the
 // parameters' values, so the translations are exact in floating point
 // for the defaults; extruded nodes are placed at mesh time, in place.
+// (The rotations' mesh nodes can land one unit in the last place off
+// their plane: the brace's hole nodes are at z = 59.99999999999999.)
+//
+// Cells (tests/io/bushing_mesh.cc checks them and every volume and area):
+// n = 1: 6958 (bolt 2340, nut 192, washer 240, inner sleeve 768, rubber
+// 1344, plastic sleeve 576, metal sleeve 576, plate 300, brace 612,
+// support 6, drop weight 4); n = 2: 54128 (16944, 1344, 2112, 6144, 10752,
+// 4608, 4992, 2400, 4752, 48, 32).
 //
 // Cross-sections: an O-grid, 4 n_quarter elements around every round
 // part (all start at 45 degrees, so that a quarter faces one side of a
