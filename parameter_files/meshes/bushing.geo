@@ -15,21 +15,32 @@
 // is the washer's top face (= the inner sleeve's bottom end). The plate
 // leaves the bushing along +x; the brace reaches out along -x and +-y.
 //
-// Cross-section through the axis (y = 0), not to scale:
+// The section y = 0, x >= 0, with the defaults (not to scale; the same
+// drawing as doc/bushing.md):
 //
-//          head  |##|              z = L + t_brace + head_height
-//   brace =======|##|======= ...   z = L .. L + t_brace
-//          lip ==|  |  |== lip     z = L - lip_height .. L
-//           ps ms|##|  |ms ps
-//   plate ====ms |##|  | ms======================================
-//                |##|  |                        [drop weight] [support]
-//           ps ms|##|  |ms ps
-//          lip ==|  |  |== lip     z = 0 .. lip_height
-//   washer ======|##|======        z = -t_washer .. 0
-//          nut  ||##||             z = -t_washer - nut_height .. -t_washer
-//                |##|  bolt end    (the shank below the nut)
-//   (## the bolt, | the inner sleeve, rubber between the sleeves,
-//    ps plastic sleeve, ms metal sleeve)
+//   z
+//   74   +----+                                        +-----------+ 73
+//        |head|                                        |   drop    |
+//   64   +----+--+-------------------+                 |  weight   |
+//        |    |  :  brace (t 4)      | x = 45          | x 100-160 |
+//   60   |    |  +------+------------+---+             +-----------+ 33
+//        |    |  |inner | rubber lip     |               gap 0.5
+//   54   |    |  |sleeve|        +--+--+-+
+//        |    |  |      |        |p |m |
+//        |bolt|  |      | rubber |l |e |
+//  32.5  |    |  |      |        |a |t +=================================+
+//  27.5  |    |  |      |        |s |a +========= plate ===========+-----+
+//        |    |  |      |        |t |l |                          | sup-|
+//    6   |    |  |      |        +--+--+-+                        | port|
+//        |    |  |      | rubber lip     |                        +-----+ 7.5
+//    0   |    |  +------+--+-------------+
+//        |    |  washer    |
+//   -4   +----+------+-----+
+//        |  nut      |
+//  -18   +----+------+
+//        |end |
+//  -24   +----+
+//        0    8 8.5  14    25 27.5 29.5 32.5      45         260   300   x
 //
 // Which parts share nodes (one conforming mesh) and why:
 // - bolt (head and shank) and nut: the thread is not modelled; a nut that
@@ -110,47 +121,68 @@
 // (axial, radial) and 10 / n to 15 / n (in the plane of brace and plate).
 
 // ------------------------------------------------------------ parameters
-DefineConstant[ n = 2 ];                   // mesh density: the study's mesh
-// Bolt M16 x 2, grade 10.9 (ISO 4014 / 4017).
-DefineConstant[ bolt_radius = 8. ];        // nominal diameter 16
-DefineConstant[ hole_radius = 8.5 ];       // 17 mm medium clearance hole (ISO 273)
-DefineConstant[ head_radius = 12. ];       // hex head 24 across flats, as a cylinder
-DefineConstant[ head_height = 10. ];       // M16 head height k = 10
-DefineConstant[ bolt_end_length = 6. ];    // thread protruding below the nut (pulled in the preload)
-// Nut and washer.
-DefineConstant[ nut_radius = 15. ];        // a big flange nut, 30 across
-DefineConstant[ nut_height = 14. ];        // a little above m = 13 of an M16 nut
-DefineConstant[ washer_radius = 30. ];     // covers the rubber lip's face to r = 30
-DefineConstant[ washer_thickness = 4. ];   // a stiff steel disc
-// Bushing.
-DefineConstant[ inner_sleeve_radius = 14. ];   // aluminium tube, wall 5.5
-DefineConstant[ inner_sleeve_length = 60. ];   // L: the clamped length of the bushing
-DefineConstant[ rubber_radius = 25. ];         // rubber wall 11 mm, a subframe bushing's
-DefineConstant[ lip_radius = 32.5 ];           // lips reach 3 mm beyond the metal sleeve
-DefineConstant[ lip_height = 6. ];             // the lips' axial thickness
-DefineConstant[ plastic_thickness = 2.5 ];     // plastic outer sleeve
-DefineConstant[ metal_thickness = 2. ];        // steel outer sleeve
-// Plate hit by the drop weight.
-DefineConstant[ plate_thickness = 5. ];        // tests 2-4 (test 1: 4)
-DefineConstant[ plate_z = inner_sleeve_length / 2. ];  // its mid-plane: the sleeve's mid-height
-DefineConstant[ plate_half_width = 45. ];      // 90 wide, 15.5 of plate beside the eye
-DefineConstant[ plate_end = 300. ];            // x of the far end, on the support
-// Brace (sheet metal), above the bushing.
-DefineConstant[ brace_thickness = 4. ];        // a pressed steel bracket
-DefineConstant[ brace_square = 25. ];          // half-width of the O-grid square around the hole
-DefineConstant[ brace_back = 90. ];            // reaches x = -brace_back
-DefineConstant[ brace_half_width = 85. ];      // reaches y = +-brace_half_width
-DefineConstant[ clamp_size = 20. ];            // the clamped (bolted) areas' width
-// Support and drop weight.
-DefineConstant[ support_length = 40. ];        // along x, under the plate's far end
-DefineConstant[ support_height = 20. ];        // a block, rigid later
-DefineConstant[ weight_x = 100. ];             // the weight's edge nearest the bushing
-DefineConstant[ weight_length = 60. ];         // along x
-DefineConstant[ weight_width = 60. ];          // along y, centred
-DefineConstant[ weight_height = 40. ];         // a block, rigid later
-DefineConstant[ weight_gap = 0.5 ];            // initial gap to the plate's top
-// The shank's node layer for the pretension section (a section plane
-// through the shank between washer and brace, inside the inner sleeve).
+// Each with its reason (doc/bushing.md has the same table).
+// Mesh density: 2 is the study's mesh, 1 the tests' coarse mesh.
+DefineConstant[ n = 2 ];
+// Bolt M16 x 2, grade 10.9 (ISO 4014):
+//   nominal diameter 16;
+DefineConstant[ bolt_radius = 8. ];
+//   17 mm medium clearance hole (ISO 273), also the washer's and the inner
+//   sleeve's bore;
+DefineConstant[ hole_radius = 8.5 ];
+//   the hex head, 24 across flats, as a cylinder;
+DefineConstant[ head_radius = 12. ];
+//   M16 head height k = 10;
+DefineConstant[ head_height = 10. ];
+//   the thread protruding below the nut, pulled in the preload.
+DefineConstant[ bolt_end_length = 6. ];
+// Nut: a big flange nut, 30 across, a little higher than m = 13 of an
+// M16 nut.
+DefineConstant[ nut_radius = 15. ];
+DefineConstant[ nut_height = 14. ];
+// Washer: a stiff steel disc covering the lower lip's face out to r = 30.
+DefineConstant[ washer_radius = 30. ];
+DefineConstant[ washer_thickness = 4. ];
+// Inner sleeve: an aluminium tube, wall 5.5, the bushing's clamped
+// length L = 60.
+DefineConstant[ inner_sleeve_radius = 14. ];
+DefineConstant[ inner_sleeve_length = 60. ];
+// Rubber: a wall of 11, as a subframe bushing's; lips 6 thick reaching
+// 3 beyond the metal sleeve.
+DefineConstant[ rubber_radius = 25. ];
+DefineConstant[ lip_radius = 32.5 ];
+DefineConstant[ lip_height = 6. ];
+// Outer sleeves: a plastic one and a thin steel one around it.
+DefineConstant[ plastic_thickness = 2.5 ];
+DefineConstant[ metal_thickness = 2. ];
+// Plate hit by the drop weight: 5 thick as the study's tests 2-4 (test 1:
+// 4), its mid-plane at the sleeves' mid-height, 90 wide (15.5 of plate
+// beside the eye), its far end at x = 300 on the support.
+DefineConstant[ plate_thickness = 5. ];
+DefineConstant[ plate_z = inner_sleeve_length / 2. ];
+DefineConstant[ plate_half_width = 45. ];
+DefineConstant[ plate_end = 300. ];
+// Brace: a pressed steel bracket 4 thick above the bushing, reaching
+// x = -brace_back and y = +-brace_half_width; the O-grid square around the
+// hole has the half-width brace_square; the clamped (bolted) areas are
+// clamp_size wide.
+DefineConstant[ brace_thickness = 4. ];
+DefineConstant[ brace_square = 25. ];
+DefineConstant[ brace_back = 90. ];
+DefineConstant[ brace_half_width = 85. ];
+DefineConstant[ clamp_size = 20. ];
+// Support: a block (rigid later) under the plate's far end.
+DefineConstant[ support_length = 40. ];
+DefineConstant[ support_height = 20. ];
+// Drop weight: a block (rigid later) above the plate from x = weight_x,
+// centred on y = 0, weight_gap above the plate's top.
+DefineConstant[ weight_x = 100. ];
+DefineConstant[ weight_length = 60. ];
+DefineConstant[ weight_width = 60. ];
+DefineConstant[ weight_height = 40. ];
+DefineConstant[ weight_gap = 0.5 ];
+// The shank's node layer for the pretension section: a plane across the
+// shank between washer (z = 0) and brace (z = L), inside the inner sleeve.
 DefineConstant[ section_z = inner_sleeve_length / 2. ];
 
 // -------------------------------------------------- derived and checked
@@ -182,11 +214,14 @@ EndIf
 If (!(lip_height < plate_bottom && plate_top < L - lip_height))
   Error("bushing.geo: the plate must lie between the lips"); Abort;
 EndIf
+// The plate's eye fits in its square, the drop weight lies between the
+// bushing and the support and clear of the brace, and the brace covers
+// the upper lip on every side.
 If (!(metal_radius + 1. < plate_half_width &&
       plate_half_width < weight_x && weight_x + weight_length <
-      plate_end - support_length && lip_radius < brace_square * Sqrt(2.) &&
-      brace_square + clamp_size < weight_x && lip_radius < brace_half_width &&
-      hole_radius < brace_square && lip_radius < brace_back))
+      plate_end - support_length && brace_square + clamp_size < weight_x &&
+      hole_radius < brace_square && lip_radius < brace_square + clamp_size &&
+      lip_radius < brace_half_width && lip_radius < brace_back))
   Error("bushing.geo: inconsistent plate, brace or drop weight extents");
   Abort;
 EndIf
