@@ -26,11 +26,14 @@ home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
 
 # The verification meshes come from one .geo each at several resolutions:
-# the values of its parameter n, each written to NAME_N.msh.
+# the values of its parameter n, each written to NAME_N.msh; "default"
+# is the .geo's own default, written to NAME.msh (the bushing: the study's
+# mesh as bushing.msh and a coarse one for tests as bushing_1.msh).
 declare -A variants=(
   [tube]="4 8 16"
   [cook_membrane]="2 4 8 16 32 64"
   [compression_block]="4 8"
+  [bushing]="default 1"
 )
 
 # mesh GEO MSH [gmsh options...]
@@ -56,7 +59,11 @@ for geo in *.geo; do
   name="${geo%.geo}"
   if [ -n "${variants[$name]+set}" ]; then
     for n in ${variants[$name]}; do
-      mesh "$geo" "${name}_${n}.msh" -setnumber n "$n"
+      if [ "$n" = default ]; then
+        mesh "$geo" "$name.msh"
+      else
+        mesh "$geo" "${name}_${n}.msh" -setnumber n "$n"
+      fi
     done
   else
     mesh "$geo" "$name.msh"

@@ -1,0 +1,343 @@
+// The bushing assembly's meshes (parameter_files/meshes/bushing.geo, issue
+// 10): bushing_1.msh (n = 1, the coarse mesh of the tests) and bushing.msh
+// (the default n = 2, the study's mesh), read with read_gmsh_mesh().
+//
+// Checked for each:
+// - every cell a hexahedron, with a positive Jacobian at each of its eight
+//   vertices (the minimum scaled Jacobian is printed: 1 for a brick, 0.71
+//   for the 45 degree corners of the O-grids);
+// - the eleven material ids, each part's cells and volume against the
+//   closed form of the meshed geometry; the 37 boundary ids, each one's
+//   faces and area against its closed form. Round hulls are polygons of
+//   N = 24 n flat facets with their corners on the circles (area of a disc
+//   of radius R: A(R) = (N / 2) R^2 sin(2 pi / N), perimeter P(R) =
+//   2 N R sin(pi / N)), which is what the closed forms use. Tolerance 1e-10
+//   relative: the nodes lie where the closed forms have them up to Gmsh's
+//   rounding (the rotations put a few nodes 1e-14 mm off their planes) and
+//   16 printed digits, deal.II's volumes and areas of these flat-faced
+//   cells are exact up to rounding, and the sums of up to 54 000 terms add
+//   rounding errors of order 1e-13 relative. A wrong radius, thickness,
+//   element layer or tag moves a measure by far more (a tenth of a mm on
+//   any radius: 1e-3 relative at least);
+// - that only the three designed pairs share vertices (bolt / nut, inner
+//   sleeve / rubber, metal sleeve / plate): every other pair of touching
+//   parts has nodes of its own for contact or tied pairs;
+// - at least two element layers through each thin part (washer, brace and
+//   plate: distinct heights of its vertices; the three sleeves: distinct
+//   radii), printed;
+// - the pretension section: a layer of the bolt's vertices lies at
+//   z = 30 (the default section_z) across the whole shank, and no bolt
+//   cell straddles that plane.
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/grid/tria.h>
+
+#include <rubberdyn/io/gmsh_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "../tests.h"
+
+using namespace dealii;
+using rubberdyn::io::read_gmsh_mesh;
+using testing::check;
+using testing::out;
+using testing::sci;
+
+namespace
+{
+  const std::string mesh_directory =
+    std::string(SOURCE_DIR) + "/../../parameter_files/meshes/";
+
+  std::string
+  g6(const double value)
+  {
+    std::ostringstream s;
+    s << std::setprecision(6) << value;
+    return s.str();
+  }
+
+  /** The default dimensions of bushing.geo (mm). */
+  namespace dimension
+  {
+    constexpr double bolt = 8., hole = 8.5, head = 12., head_height = 10.;
+    constexpr double end_length = 6., nut = 15., nut_height = 14.;
+    constexpr double washer = 30., washer_t = 4.;
+    constexpr double inner = 14., L = 60., rubber = 25., lip = 32.5;
+    constexpr double lip_h = 6., plastic = 27.5, metal = 29.5;
+    constexpr double plate_t = 5., plate_w = 90., plate_length = 345.;
+    constexpr double brace_t = 4., brace_x = 135., brace_y = 170.;
+    constexpr double clamp = 20., brace_square = 25.;
+    constexpr double support_l = 40., support_h = 20.;
+    constexpr double weight_l = 60., weight_w = 60., weight_h = 40.;
+    constexpr double section_z = 30.;
+  } // namespace dimension
+
+  /**
+   * The number of distinct values in @p values, values closer than
+   * 1e-6 mm counted as one.
+   */
+  unsigned int
+  n_distinct(std::vector<double> values)
+  {
+    std::sort(values.begin(), values.end());
+    unsigned int count = 0;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (i == 0 || values[i] - values[i - 1] > 1e-6)
+        ++count;
+    return count;
+  }
+
+  /**
+   * The scaled Jacobian of @p cell at each of its vertices: the
+   * determinant of the three edges leaving the vertex (each taken along
+   * the reference cell's coordinate direction), divided by their lengths;
+   * returns the smallest.
+   */
+  template <typename Cell>
+  double
+  min_scaled_jacobian(const Cell &cell)
+  {
+    double smallest = 1.;
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        Tensor<1, 3> edge[3];
+        double       length = 1.;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            // Vertex v is lexicographic (bit d: the coordinate d is 1);
+            // its neighbour along d flips that bit.
+            const unsigned int w    = v ^ (1u << d);
+            const double       sign = (v & (1u << d)) ? -1. : 1.;
+            edge[d] = sign * (cell->vertex(w) - cell->vertex(v));
+            length *= edge[d].norm();
+          }
+        const double det = edge[0] * cross_product_3d(edge[1], edge[2]);
+        smallest         = std::min(smallest, det / length);
+      }
+    return smallest;
+  }
+
+  void
+  check_bushing(const std::string &file, const unsigned int n)
+  {
+    using namespace dimension;
+    const double pi = numbers::PI;
+    const double N  = 24. * n;
+    const auto   A  = [&](const double R) {
+      return N / 2. * R * R * std::sin(2. * pi / N);
+    };
+    const auto P = [&](const double R) {
+      return 2. * N * R * std::sin(pi / N);
+    };
+    const double z_end  = -washer_t - nut_height - end_length;
+    const double z_head = L + brace_t;
+
+    const std::map<unsigned int, double> volumes = {
+      {1,
+       A(bolt) * (z_head + head_height - z_end) +
+         (A(head) - A(bolt)) * head_height},
+      {2, (A(nut) - A(bolt)) * nut_height},
+      {3, (A(washer) - A(hole)) * washer_t},
+      {4, (A(inner) - A(hole)) * L},
+      {5, (A(rubber) - A(inner)) * L + (A(lip) - A(rubber)) * 2. * lip_h},
+      {6, (A(plastic) - A(rubber)) * (L - 2. * lip_h)},
+      {7, (A(metal) - A(plastic)) * (L - 2. * lip_h)},
+      {8, (plate_w * plate_length - A(metal)) * plate_t},
+      {9, (brace_x * brace_y - A(hole)) * brace_t},
+      {10, support_l * plate_w * support_h},
+      {11, weight_l * weight_w * weight_h}};
+    const double brace_face                    = brace_x * brace_y - A(hole);
+    const double clamp_back                    = clamp * 2. * brace_square;
+    const std::map<unsigned int, double> areas = {
+      {1, P(bolt) * (z_head + washer_t)},
+      {2, A(head) - A(bolt)},
+      {3, A(bolt)},
+      {4, A(head) + P(head) * head_height + P(bolt) * end_length},
+      {5, A(nut) - A(bolt)},
+      {6, P(nut) * nut_height + A(nut) - A(bolt)},
+      {7, A(washer) - A(hole)},
+      {8, A(washer) - A(hole)},
+      {9, (P(washer) + P(hole)) * washer_t},
+      {10, A(inner) - A(hole)},
+      {11, A(inner) - A(hole)},
+      {12, P(hole) * L},
+      {13, A(lip) - A(inner)},
+      {14, A(lip) - A(inner)},
+      {15, P(rubber) * (L - 2. * lip_h)},
+      {16, 2. * (A(lip) - A(rubber))},
+      {17, P(lip) * 2. * lip_h},
+      {18, P(rubber) * (L - 2. * lip_h)},
+      {19, P(plastic) * (L - 2. * lip_h)},
+      {20, 2. * (A(plastic) - A(rubber))},
+      {21, P(plastic) * (L - 2. * lip_h)},
+      {22, P(metal) * (L - 2. * lip_h - plate_t)},
+      {23, 2. * (A(metal) - A(plastic))},
+      {24, plate_w * plate_length - A(metal)},
+      {25, plate_w * plate_length - A(metal)},
+      {26, 2. * (plate_w + plate_length) * plate_t},
+      {27, brace_face},
+      {28, brace_face - clamp_back - 2. * clamp * clamp},
+      {29, clamp_back},
+      {30, clamp * clamp},
+      {31, clamp * clamp},
+      {32, P(hole) * brace_t},
+      {33, 2. * (brace_x + brace_y) * brace_t},
+      {34, support_l * plate_w},
+      {35, support_l * plate_w + 2. * (support_l + plate_w) * support_h},
+      {36, weight_l * weight_w},
+      {37, weight_l * weight_w + 2. * (weight_l + weight_w) * weight_h}};
+
+    Triangulation<3> tria;
+    try
+      {
+        read_gmsh_mesh(tria, mesh_directory + file, "Mesh/Mesh file");
+      }
+    catch (const std::exception &error)
+      {
+        check(false, file + " was refused: " + error.what());
+      }
+    out() << file << " (n = " << n << "): " << tria.n_active_cells()
+          << " cells, " << tria.n_used_vertices() << " vertices" << std::endl;
+
+    // Cells, volumes, Jacobians; the vertices of each part.
+    std::map<unsigned int, std::pair<unsigned int, double>> materials,
+      boundaries;
+    std::map<unsigned int, std::set<unsigned int>> part_vertices;
+    double                                         min_jacobian    = 1.;
+    unsigned int                                   n_non_hexahedra = 0;
+    unsigned int                                   n_straddling    = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        if (cell->reference_cell() != ReferenceCells::Hexahedron)
+          ++n_non_hexahedra;
+        auto &m = materials[cell->material_id()];
+        ++m.first;
+        m.second += cell->measure();
+        min_jacobian = std::min(min_jacobian, min_scaled_jacobian(cell));
+        for (const unsigned int v : cell->vertex_indices())
+          part_vertices[cell->material_id()].insert(cell->vertex_index(v));
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              auto &b = boundaries[cell->face(f)->boundary_id()];
+              ++b.first;
+              b.second += cell->face(f)->measure();
+            }
+        if (cell->material_id() == 1)
+          {
+            double low = 1e300, high = -1e300;
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                low  = std::min(low, cell->vertex(v)[2]);
+                high = std::max(high, cell->vertex(v)[2]);
+              }
+            if (low < section_z - 1e-9 && high > section_z + 1e-9)
+              ++n_straddling;
+          }
+      }
+    check(n_non_hexahedra == 0, file + ": every cell is a hexahedron");
+    out() << "  minimum scaled Jacobian at the vertices: "
+          << std::setprecision(2) << std::fixed << min_jacobian
+          << std::defaultfloat << std::endl;
+    check(min_jacobian > 0., file + ": a cell is inverted at a vertex");
+
+    const auto report = [&](const char                           *what,
+                            const auto                           &measured,
+                            const std::map<unsigned int, double> &expected,
+                            const char                           *items,
+                            const char                           *measure) {
+      for (const auto &[id, count_and_measure] : measured)
+        {
+          const double value = count_and_measure.second;
+          out() << "  " << what << ' ' << id << ": " << count_and_measure.first
+                << ' ' << items << ", " << measure << ' ' << g6(value);
+          const auto closed_form = expected.find(id);
+          check(closed_form != expected.end(),
+                file + ": unexpected " + what + " id " + std::to_string(id));
+          const double error =
+            std::abs(value - closed_form->second) / closed_form->second;
+          out() << " (closed form " << g6(closed_form->second)
+                << ", relative error < 1e-10)" << std::endl;
+          check(error < 1e-10,
+                file + ": " + what + ' ' + std::to_string(id) + ' ' + measure +
+                  " relative error " + sci(error));
+        }
+      check(measured.size() == expected.size(),
+            file + ": not every " + what + " id is present");
+    };
+    report("material", materials, volumes, "cells", "volume");
+    report("boundary", boundaries, areas, "faces", "area");
+
+    // Shared vertices: only the designed pairs.
+    const std::set<std::pair<unsigned int, unsigned int>> designed = {{1, 2},
+                                                                      {4, 5},
+                                                                      {7, 8}};
+    for (auto a = part_vertices.begin(); a != part_vertices.end(); ++a)
+      for (auto b = std::next(a); b != part_vertices.end(); ++b)
+        {
+          std::vector<unsigned int> common;
+          std::set_intersection(a->second.begin(),
+                                a->second.end(),
+                                b->second.begin(),
+                                b->second.end(),
+                                std::back_inserter(common));
+          const bool shared = !common.empty();
+          if (shared)
+            out() << "  materials " << a->first << " and " << b->first
+                  << " share " << common.size() << " vertices" << std::endl;
+          check(shared == (designed.count({a->first, b->first}) == 1),
+                file + ": materials " + std::to_string(a->first) + " and " +
+                  std::to_string(b->first) +
+                  (shared ? " share vertices" : " share no vertex"));
+        }
+
+    // Element layers through the thin parts.
+    const auto vertices = tria.get_vertices();
+    const auto layers =
+      [&](const unsigned int material, const bool radial, const char *name) {
+        std::vector<double> values;
+        for (const unsigned int v : part_vertices[material])
+          values.push_back(radial ? std::hypot(vertices[v][0], vertices[v][1]) :
+                                    vertices[v][2]);
+        const unsigned int n_layers = n_distinct(values) - 1;
+        out() << "  " << name << ": " << n_layers << " element layers through "
+              << (radial ? "the wall" : "the thickness") << std::endl;
+        check(n_layers >= 2,
+              file + ": " + name + " has fewer than two element layers");
+      };
+    layers(3, false, "washer");
+    layers(4, true, "inner sleeve");
+    layers(6, true, "plastic outer sleeve");
+    layers(7, true, "metal outer sleeve");
+    layers(8, false, "plate");
+    layers(9, false, "brace");
+
+    // The pretension section: bolt vertices on z = section_z across the
+    // shank (the core's (6n + 1)^2 and ring A's 24n x 2n), no cell across.
+    unsigned int n_section = 0;
+    for (const unsigned int v : part_vertices[1])
+      if (std::abs(vertices[v][2] - section_z) < 1e-9)
+        ++n_section;
+    const unsigned int expected_section =
+      (6 * n + 1) * (6 * n + 1) + 24 * n * 2 * n;
+    out() << "  section z = " << section_z << ": " << n_section
+          << " bolt vertices, " << n_straddling << " bolt cells across"
+          << std::endl;
+    check(n_section == expected_section && n_straddling == 0,
+          file + ": no node layer of the shank at the section");
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  check_bushing("bushing_1.msh", 1);
+  check_bushing("bushing.msh", 2);
+}
