@@ -570,5 +570,99 @@ namespace rubberdyn
         }
       return force;
     }
+
+
+
+    std::vector<SectionResultant>
+    SolidHexElements::section_resultants(
+      const VectorType                &u,
+      const std::vector<SectionPlane> &planes) const
+    {
+      std::vector<SectionResultant> result(planes.size());
+      if (planes.empty())
+        return result;
+      // The kernel on the blocks with a cut lane, as section_forces().
+      BlockContext context;
+      context.reference                = &reference;
+      context.u                        = u.begin();
+      context.v                        = u.begin(); // unused: no viscosity
+      context.bulk_viscosity_linear    = 0.;
+      context.bulk_viscosity_quadratic = 0.;
+      context.collapse_ratio           = 0.;
+      BlockResult         block_result;
+      double              offsets[n_nodes][3][L];
+      std::vector<double> scratch;
+      double              no_scaling[L];
+      std::fill(no_scaling, no_scaling + L, 1.);
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const internal::HexBlock &block = blocks[b];
+          // Which plane cuts each lane (as cut_sections(): nodes strictly
+          // on both sides), and which of its nodes lie on the normal's side.
+          unsigned int plane_of_lane[L];
+          bool         far_side[n_nodes][L];
+          bool         any = false;
+          for (unsigned int l = 0; l < L; ++l)
+            {
+              plane_of_lane[l] = numbers::invalid_unsigned_int;
+              if (l >= block.n_active)
+                continue;
+              for (unsigned int s = 0; s < planes.size(); ++s)
+                {
+                  if (planes[s].group != block.group)
+                    continue;
+                  bool far[n_nodes];
+                  if (!plane_cuts_element(block, l, planes[s], far))
+                    continue;
+                  // (An element cut by two planes counts for the first.)
+                  plane_of_lane[l] = s;
+                  any              = true;
+                  for (unsigned int a = 0; a < n_nodes; ++a)
+                    far_side[a][l] = far[a];
+                  break;
+                }
+            }
+          if (!any)
+            continue;
+          const GroupData &group = groups[block.group];
+          context.offsets =
+            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr;
+          context.kernel                = group.kernel.get();
+          context.density               = group.density;
+          context.stabilization_modulus = group.stabilization_modulus;
+          context.history_old = history_old.data() + block.history_offset;
+          scratch.resize(n_q * L * group.law->n_state_variables());
+          context.history_new = scratch.data();
+          if (!evaluate_block(block,
+                              group.formulation == Formulation::fbar,
+                              context,
+                              no_scaling,
+                              block_result))
+            continue;
+          for (unsigned int l = 0; l < block.n_active; ++l)
+            if (plane_of_lane[l] != numbers::invalid_unsigned_int)
+              {
+                SectionResultant &r = result[plane_of_lane[l]];
+                ++r.n_cut;
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    Tensor<1, 3> x, f;
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        x[d] =
+                          block.X[a][d][l] + u.begin()[block.dofs[a][d][l]];
+                        f[d] = block_result.force[a][d][l];
+                      }
+                    r.centre_sum += x / double(n_nodes);
+                    if (far_side[a][l])
+                      {
+                        r.force += f;
+                        r.moment_about_origin += cross_product_3d(x, f);
+                      }
+                  }
+              }
+        }
+      return result;
+    }
   } // namespace elements
 } // namespace rubberdyn

@@ -397,6 +397,30 @@ namespace rubberdyn
       // preload, start_from()).
       if (!model.pretension_sections.empty())
         setup::cut_pretension_sections(model, *elements);
+      // Cross sections: each must cut an element of its part.
+      if (!model.cross_sections.empty())
+        {
+          std::vector<elements::SectionPlane> planes;
+          for (const CrossSection &section : model.cross_sections)
+            planes.push_back({section.point, section.normal, section.part});
+          VectorType zero(model.partitioner);
+          const std::vector<elements::SectionResultant> resultants =
+            elements->section_resultants(zero, planes);
+          for (unsigned int s = 0; s < planes.size(); ++s)
+            if (Utilities::MPI::sum(resultants[s].n_cut, comm) == 0)
+              {
+                const CrossSection &section = model.cross_sections[s];
+                std::ostringstream  where;
+                where << "the plane through (" << section.point
+                      << ") with normal (" << section.normal
+                      << ") cuts no element of the part '"
+                      << model.parts[section.part].name
+                      << "': it misses the part, or lies on element faces "
+                         "(move it inside a layer of elements)";
+                throw InputError("Cross sections/" + section.name + "/Point",
+                                 where.str());
+              }
+        }
 
       // Mass scaling: elements whose stable step is below the target get
       // added density.
@@ -774,6 +798,14 @@ namespace rubberdyn
             names.push_back(section.name);
           add_postprocessor(
             std::make_unique<postprocess::PretensionSectionColumns>(names));
+        }
+      if (!model.cross_sections.empty())
+        {
+          names.clear();
+          for (const CrossSection &section : model.cross_sections)
+            names.push_back(section.name);
+          add_postprocessor(
+            std::make_unique<postprocess::CrossSectionColumns>(names));
         }
       if (!output.history_nodes.empty())
         add_postprocessor(std::make_unique<postprocess::HistoryNodeColumns>(

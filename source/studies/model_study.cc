@@ -347,6 +347,117 @@ namespace rubberdyn
           }
         prm.leave_subsection();
       }
+
+
+
+      /** `Cross sections`: the names, then one subsection each. */
+      void
+      declare_cross_sections(ParameterHandler            &prm,
+                             const registry::ListedNames &names)
+      {
+        prm.enter_subsection("Cross sections");
+        prm.declare_entry(
+          "Names", "", Patterns::Anything(),
+          "Names of the cross sections for output, separated by commas; "
+          "each has a subsection of its name. A cross section is a plane "
+          "across a deformable part (LS-DYNA's *DATABASE_CROSS_SECTION); "
+          "the explicit run's time history gets, at the plane, the "
+          "resultant of the part's stresses on the side the Normal points "
+          "from: <name>_force_x/_y/_z (kN), <name>_moment_x/_y/_z (kN mm, "
+          "about the current centre of the cut elements), "
+          "<name>_centre_x/_y/_z (mm, that centre), "
+          "<name>_axial_force (kN, along the Normal: tension positive), "
+          "<name>_shear_force (kN, magnitude across the Normal), "
+          "<name>_torque (kN mm, about the Normal) and "
+          "<name>_bending_moment (kN mm, magnitude across the Normal). "
+          "Explicit runs (and the explicit part of 'quasi-static then "
+          "explicit').");
+        for (const std::string &name :
+             names_with_template(names, "Cross sections"))
+          {
+            prm.enter_subsection(name);
+            prm.declare_entry("Part", "", Patterns::Anything(),
+                              "The deformable part the plane cuts (F-bar or "
+                              "displacement element): the resultant is that "
+                              "of the part's own elements that the plane "
+                              "cuts, whatever else is attached to them.");
+            prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
+                              "A point of the plane (mm). Put the plane "
+                              "inside a layer of elements, not on their "
+                              "faces.");
+            prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
+                              "Normal of the plane (need not be a unit "
+                              "vector): the resultant is that of the "
+                              "traction sigma n on the plane, the force "
+                              "the material on the Normal's side exerts on "
+                              "the other side (tension along the Normal "
+                              "positive).");
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
+
+
+
+      /**
+       * Read `Cross sections` into @p m (after its parts).
+       *
+       * @throws InputError naming the entry: an unknown, rigid or mixed u-p
+       *   part, a zero normal, or a section in a quasi-static run.
+       */
+      void
+      parse_cross_sections(ParameterHandler                  &prm,
+                           const parameters::TimeIntegration &time,
+                           model::Model                      &m)
+      {
+        prm.enter_subsection("Cross sections");
+        for (const std::string &name : listed_names(prm))
+          {
+            const std::string path = "Cross sections/" + name;
+            if (time.scheme == "quasi-static")
+              throw InputError("Time integration/Scheme",
+                               "the cross section '" + name +
+                                 "' reports in explicit runs only (use "
+                                 "'explicit' or 'quasi-static then "
+                                 "explicit')");
+            prm.enter_subsection(name);
+            model::CrossSection section;
+            section.name            = name;
+            const std::string part  = Utilities::trim(prm.get("Part"));
+            bool              found = false;
+            for (unsigned int p = 0; p < m.parts.size(); ++p)
+              if (m.parts[p].name == part)
+                {
+                  found        = true;
+                  section.part = p;
+                }
+            if (!found)
+              throw InputError(path + "/Part",
+                               "names no part ('" + part.substr(0, 40) +
+                                 "' is not in Parts/Names)");
+            const model::Part &cut_part = m.parts[section.part];
+            if (cut_part.rigid)
+              throw InputError(path + "/Part",
+                               "the part '" + part +
+                                 "' is rigid: a cross section cuts a "
+                                 "deformable part");
+            if (cut_part.formulation == elements::Formulation::mixed_up)
+              throw InputError(path + "/Part",
+                               "the part '" + part +
+                                 "' uses the mixed u-p element, which the "
+                                 "explicit run does not take");
+            section.point =
+              Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
+            const Tensor<1, 3> normal =
+              parse_vector(prm.get("Normal"), path + "/Normal");
+            if (!(normal.norm() > 0.))
+              throw InputError(path + "/Normal", "must not be zero");
+            section.normal = normal / normal.norm();
+            prm.leave_subsection();
+            m.cross_sections.push_back(section);
+          }
+        prm.leave_subsection();
+      }
     } // namespace
 
 
@@ -575,6 +686,7 @@ namespace rubberdyn
       prm.leave_subsection();
 
       declare_pretension_sections(prm, names);
+      declare_cross_sections(prm, names);
       declare_contact_pairs(prm, names);
     }
 
@@ -926,6 +1038,7 @@ namespace rubberdyn
       prm.leave_subsection();
 
       parse_pretension_sections(prm, time_integration, m);
+      parse_cross_sections(prm, time_integration, m);
       parse_contact_pairs(prm, require_boundary_ids, m);
 
       m.setup();
