@@ -704,6 +704,11 @@ namespace rubberdyn
       time_integration.parse_parameters(prm);
       contact.parse_parameters(prm);
       output.parse_parameters(prm);
+      if (time_integration.scheme == "quasi-static" &&
+          !output.history_expressions.empty())
+        throw InputError("Output/History expressions",
+                         "are computed in explicit runs only (Time "
+                         "integration/Scheme is 'quasi-static')");
 
       model = std::make_unique<model::Model>(MPI_COMM_WORLD);
       model::Model &m = *model;
