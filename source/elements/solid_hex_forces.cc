@@ -387,6 +387,64 @@ namespace rubberdyn
 
 
 
+      /**
+       * The kernel on single blocks for output (section_forces(),
+       * section_resultants()): without bulk viscosity (their forces are
+       * the stress's), with the accepted history, the new history written
+       * into scratch.
+       */
+      class OutputEvaluator
+      {
+      public:
+        OutputEvaluator(const internal::ReferenceShapes &reference,
+                        const double                    *u)
+        {
+          context.reference                = &reference;
+          context.u                        = u;
+          context.v                        = u; // unused: no viscosity
+          context.bulk_viscosity_linear    = 0.;
+          context.bulk_viscosity_quadratic = 0.;
+          context.collapse_ratio           = 0.;
+          std::fill(no_scaling, no_scaling + L, 1.);
+        }
+
+        /**
+         * The forces of @p block (of @p group, SolidHexElements::GroupData:
+         * deduced), its section offsets @p offsets or nullptr; nullptr if
+         * an element failed.
+         */
+        template <typename Group>
+        const BlockResult *
+        evaluate(const internal::HexBlock &block,
+                 const Group              &group,
+                 const double             *history_old,
+                 const double             *offsets)
+        {
+          context.offsets               = offsets;
+          context.kernel                = group.kernel.get();
+          context.density               = group.density;
+          context.stabilization_modulus = group.stabilization_modulus;
+          context.history_old           = history_old;
+          scratch.resize(n_q * L * group.law->n_state_variables());
+          context.history_new = scratch.data();
+          if (!evaluate_block(block,
+                              group.formulation == Formulation::fbar,
+                              context,
+                              no_scaling,
+                              result))
+            return nullptr;
+          return &result;
+        }
+
+      private:
+        BlockContext        context;
+        BlockResult         result;
+        std::vector<double> scratch;
+        double              no_scaling[L];
+      };
+
+
+
       // The user's message for a failed element.
       std::string
       failure_message(const FailureKind      kind,
@@ -533,40 +591,20 @@ namespace rubberdyn
     std::vector<double>
     SolidHexElements::section_forces(const VectorType &u) const
     {
-      // The kernel on the cut blocks only, without bulk viscosity (the
-      // section force is the stress's), writing the history into scratch.
+      // The kernel on the cut blocks only.
       std::vector<double> force(shortenings.size(), 0.);
-      BlockContext        context;
-      context.reference                = &reference;
-      context.u                        = u.begin();
-      context.v                        = u.begin(); // unused: no viscosity
-      context.bulk_viscosity_linear    = 0.;
-      context.bulk_viscosity_quadratic = 0.;
-      context.collapse_ratio           = 0.;
-      BlockResult         block_result;
+      OutputEvaluator     evaluator(reference, u.begin());
       double              offsets[n_nodes][3][L];
-      std::vector<double> scratch;
-      double              no_scaling[L];
-      std::fill(no_scaling, no_scaling + L, 1.);
       for (const SectionCut &cut : cuts)
         {
           const internal::HexBlock &block = blocks[cut.block];
-          const GroupData          &group = groups[block.group];
           block_offsets(cut.block, offsets);
-          context.offsets               = &offsets[0][0][0];
-          context.kernel                = group.kernel.get();
-          context.density               = group.density;
-          context.stabilization_modulus = group.stabilization_modulus;
-          context.history_old = history_old.data() + block.history_offset;
-          scratch.resize(n_q * L * group.law->n_state_variables());
-          context.history_new = scratch.data();
-          if (!evaluate_block(block,
-                              group.formulation == Formulation::fbar,
-                              context,
-                              no_scaling,
-                              block_result))
-            continue;
-          add_section_forces(cut, block.n_active, block_result, force);
+          if (const BlockResult *result =
+                evaluator.evaluate(block,
+                                   groups[block.group],
+                                   history_old.data() + block.history_offset,
+                                   &offsets[0][0][0]))
+            add_section_forces(cut, block.n_active, *result, force);
         }
       return force;
     }
@@ -581,19 +619,9 @@ namespace rubberdyn
       std::vector<SectionResultant> result(planes.size());
       if (planes.empty())
         return result;
-      // The kernel on the blocks with a cut lane, as section_forces().
-      BlockContext context;
-      context.reference                = &reference;
-      context.u                        = u.begin();
-      context.v                        = u.begin(); // unused: no viscosity
-      context.bulk_viscosity_linear    = 0.;
-      context.bulk_viscosity_quadratic = 0.;
-      context.collapse_ratio           = 0.;
-      BlockResult         block_result;
-      double              offsets[n_nodes][3][L];
-      std::vector<double> scratch;
-      double              no_scaling[L];
-      std::fill(no_scaling, no_scaling + L, 1.);
+      // The kernel on the blocks with a cut lane.
+      OutputEvaluator evaluator(reference, u.begin());
+      double          offsets[n_nodes][3][L];
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
           const internal::HexBlock &block = blocks[b];
@@ -624,20 +652,12 @@ namespace rubberdyn
             }
           if (!any)
             continue;
-          const GroupData &group = groups[block.group];
-          context.offsets =
-            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr;
-          context.kernel                = group.kernel.get();
-          context.density               = group.density;
-          context.stabilization_modulus = group.stabilization_modulus;
-          context.history_old = history_old.data() + block.history_offset;
-          scratch.resize(n_q * L * group.law->n_state_variables());
-          context.history_new = scratch.data();
-          if (!evaluate_block(block,
-                              group.formulation == Formulation::fbar,
-                              context,
-                              no_scaling,
-                              block_result))
+          const BlockResult *block_result = evaluator.evaluate(
+            block,
+            groups[block.group],
+            history_old.data() + block.history_offset,
+            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr);
+          if (block_result == nullptr)
             continue;
           for (unsigned int l = 0; l < block.n_active; ++l)
             if (plane_of_lane[l] != numbers::invalid_unsigned_int)
@@ -651,7 +671,7 @@ namespace rubberdyn
                       {
                         x[d] =
                           block.X[a][d][l] + u.begin()[block.dofs[a][d][l]];
-                        f[d] = block_result.force[a][d][l];
+                        f[d] = block_result->force[a][d][l];
                       }
                     r.centre_sum += x / double(n_nodes);
                     if (far_side[a][l])

@@ -398,29 +398,7 @@ namespace rubberdyn
       if (!model.pretension_sections.empty())
         setup::cut_pretension_sections(model, *elements);
       // Cross sections: each must cut an element of its part.
-      if (!model.cross_sections.empty())
-        {
-          std::vector<elements::SectionPlane> planes;
-          for (const CrossSection &section : model.cross_sections)
-            planes.push_back({section.point, section.normal, section.part});
-          VectorType zero(model.partitioner);
-          const std::vector<elements::SectionResultant> resultants =
-            elements->section_resultants(zero, planes);
-          for (unsigned int s = 0; s < planes.size(); ++s)
-            if (Utilities::MPI::sum(resultants[s].n_cut, comm) == 0)
-              {
-                const CrossSection &section = model.cross_sections[s];
-                std::ostringstream  where;
-                where << "the plane through (" << section.point
-                      << ") with normal (" << section.normal
-                      << ") cuts no element of the part '"
-                      << model.parts[section.part].name
-                      << "': it misses the part, or lies on element faces "
-                         "(move it inside a layer of elements)";
-                throw InputError("Cross sections/" + section.name + "/Point",
-                                 where.str());
-              }
-        }
+      setup::check_cross_sections(model, *elements);
 
       // Mass scaling: elements whose stable step is below the target get
       // added density.

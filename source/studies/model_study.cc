@@ -202,6 +202,61 @@ namespace rubberdyn
 
 
 
+      /** A plane across a deformable part, as a section gives it. */
+      struct PartPlane
+      {
+        unsigned int part = 0;
+        Point<3>     point;
+        Tensor<1, 3> normal;
+      };
+
+      /**
+       * `Part`, `Point` and `Normal` of the section at @p path (the current
+       * subsection of @p prm), for pretension and cross sections alike.
+       *
+       * @throws InputError naming the entry: an unknown, rigid or mixed u-p
+       *   part (@p kind names the section in the message), a zero normal.
+       */
+      PartPlane
+      parse_part_plane(ParameterHandler   &prm,
+                       const std::string  &path,
+                       const std::string  &kind,
+                       const model::Model &m)
+      {
+        PartPlane         plane;
+        const std::string part  = Utilities::trim(prm.get("Part"));
+        bool              found = false;
+        for (unsigned int p = 0; p < m.parts.size(); ++p)
+          if (m.parts[p].name == part)
+            {
+              found      = true;
+              plane.part = p;
+            }
+        if (!found)
+          throw InputError(path + "/Part",
+                           "names no part ('" + part.substr(0, 40) +
+                             "' is not in Parts/Names)");
+        const model::Part &cut_part = m.parts[plane.part];
+        if (cut_part.rigid)
+          throw InputError(path + "/Part",
+                           "the part '" + part + "' is rigid: a " + kind +
+                             " cuts a deformable part");
+        if (cut_part.formulation == elements::Formulation::mixed_up)
+          throw InputError(path + "/Part",
+                           "the part '" + part +
+                             "' uses the mixed u-p element, which takes no " +
+                             kind + " yet; use 'F-bar'");
+        plane.point = Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
+        const Tensor<1, 3> normal =
+          parse_vector(prm.get("Normal"), path + "/Normal");
+        if (!(normal.norm() > 0.))
+          throw InputError(path + "/Normal", "must not be zero");
+        plane.normal = normal / normal.norm();
+        return plane;
+      }
+
+
+
       /** `Pretension sections`: the names, then one subsection each. */
       void
       declare_pretension_sections(ParameterHandler            &prm,
@@ -288,37 +343,12 @@ namespace rubberdyn
                                  "the quasi-static load path");
             prm.enter_subsection(name);
             model::PretensionSection section;
-            section.name            = name;
-            const std::string part  = Utilities::trim(prm.get("Part"));
-            bool              found = false;
-            for (unsigned int p = 0; p < m.parts.size(); ++p)
-              if (m.parts[p].name == part)
-                {
-                  found        = true;
-                  section.part = p;
-                }
-            if (!found)
-              throw InputError(path + "/Part",
-                               "names no part ('" + part.substr(0, 40) +
-                                 "' is not in Parts/Names)");
-            const model::Part &cut_part = m.parts[section.part];
-            if (cut_part.rigid)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' is rigid: a section cuts a deformable "
-                                 "part");
-            if (cut_part.formulation == elements::Formulation::mixed_up)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' uses the mixed u-p element, which takes "
-                                 "no pretension section yet; use 'F-bar'");
-            section.point =
-              Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
-            const Tensor<1, 3> normal =
-              parse_vector(prm.get("Normal"), path + "/Normal");
-            if (!(normal.norm() > 0.))
-              throw InputError(path + "/Normal", "must not be zero");
-            section.normal        = normal / normal.norm();
+            section.name = name;
+            const PartPlane plane =
+              parse_part_plane(prm, path, "pretension section", m);
+            section.part          = plane.part;
+            section.point         = plane.point;
+            section.normal        = plane.normal;
             section.force_control = prm.get("Control") == "force";
             section.target_force  = prm.get_double("Target force");
             section.shortening    = prm.get_double("Shortening");
@@ -422,37 +452,12 @@ namespace rubberdyn
                                  "explicit')");
             prm.enter_subsection(name);
             model::CrossSection section;
-            section.name            = name;
-            const std::string part  = Utilities::trim(prm.get("Part"));
-            bool              found = false;
-            for (unsigned int p = 0; p < m.parts.size(); ++p)
-              if (m.parts[p].name == part)
-                {
-                  found        = true;
-                  section.part = p;
-                }
-            if (!found)
-              throw InputError(path + "/Part",
-                               "names no part ('" + part.substr(0, 40) +
-                                 "' is not in Parts/Names)");
-            const model::Part &cut_part = m.parts[section.part];
-            if (cut_part.rigid)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' is rigid: a cross section cuts a "
-                                 "deformable part");
-            if (cut_part.formulation == elements::Formulation::mixed_up)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' uses the mixed u-p element, which the "
-                                 "explicit run does not take");
-            section.point =
-              Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
-            const Tensor<1, 3> normal =
-              parse_vector(prm.get("Normal"), path + "/Normal");
-            if (!(normal.norm() > 0.))
-              throw InputError(path + "/Normal", "must not be zero");
-            section.normal = normal / normal.norm();
+            section.name = name;
+            const PartPlane plane =
+              parse_part_plane(prm, path, "cross section", m);
+            section.part   = plane.part;
+            section.point  = plane.point;
+            section.normal = plane.normal;
             prm.leave_subsection();
             m.cross_sections.push_back(section);
           }

@@ -37,21 +37,7 @@ source "$source_dir/tests/model/script_helpers.sh"
 # ---- 1. The cantilever.
 cantilever() {
   cat <<PRM
-set Study = Model
-subsection Mesh
-  set Mesh file = $source_dir/parameter_files/meshes/bar.msh
-end
-subsection Parts
-  set Names = bar
-  subsection bar
-    set Material ids        = 1
-    set Element formulation = F-bar
-    set Model               = Elastic
-    set Young's modulus     = 210
-    set Poisson's ratio     = 0.3
-    set Density             = 7.85e-6
-  end
-end
+$(steel_bar_model)
 subsection Boundary conditions
   set Names = clamp, load
   subsection clamp

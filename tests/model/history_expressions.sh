@@ -22,22 +22,7 @@ source "$source_dir/tests/model/script_helpers.sh"
 # bar SCHEME EXPRESSIONS OUTPUT
 bar() {
   cat <<PRM
-set Study = Model
-subsection Mesh
-  set Mesh file = $source_dir/parameter_files/meshes/bar.msh
-end
-subsection Parts
-  set Names = bar
-  subsection bar
-    set Material ids        = 1
-    set Element formulation = F-bar
-    set Model               = Elastic
-    set Young's modulus     = 210
-    set Poisson's ratio     = 0.3
-    set Density             = 7.85e-6
-    set Initial velocity    = 1, 2, 0
-  end
-end
+$(steel_bar_model "1, 2, 0")
 subsection Time integration
   set Scheme   = $1
   set End time = 0.01
