@@ -8,7 +8,12 @@ die_force_*). Lower panel: in steady sliding (slide >= 1.5, as
 tests/model/ironing.sh), each ratio less its least-squares cubic in the
 slide, in % of its mean: the oscillation without the smooth drift.
 
-    /usr/bin/python3 doc/scripts/ironing_figure.py MORTAR_CSV RIGID_CSV PNG
+    /usr/bin/python3 doc/scripts/ironing_figure.py MORTAR_CSV RIGID_CSV PNG \
+        [STEADY SLAB_LENGTH]
+
+STEADY (default 1.5) is the slide from which the lower panel is drawn;
+benchmarks/ironing.sh with its longer slab (SLAB_LENGTH 18, default 9)
+measures from a slide of 3.0 (doc/figures/ironing_force_ratio_long.png).
 
 MORTAR_CSV and RIGID_CSV are the runs' time_history.csv (e.g. from
 tests/model/ironing.sh, which leaves ironing/time_history.csv and
@@ -46,9 +51,9 @@ def series(rows, fx, fz):
     return s, r
 
 
-def detrended(s, r):
+def detrended(s, r, steady):
     s, r = np.array(s), np.array(r)
-    keep = s >= STEADY - 1e-9
+    keep = s >= steady - 1e-9
     s, r = s[keep], r[keep]
     trend = np.polyval(np.polyfit(s - 2.44, r, 3), s - 2.44)
     return s, 100 * (r - trend) / r.mean()
@@ -56,6 +61,8 @@ def detrended(s, r):
 
 def main():
     mortar, rigid, png = sys.argv[1:4]
+    steady = float(sys.argv[4]) if len(sys.argv) > 4 else STEADY
+    length = sys.argv[5] if len(sys.argv) > 5 else "9"
     m, g = read(mortar), read(rigid)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True,
                                  gridspec_kw={"height_ratios": [2, 1]})
@@ -69,16 +76,17 @@ def main():
     s, r = series(m, "ironing_tangential_force", "ironing_normal_force")
     ax.plot(s, r, color="tab:blue", lw=1.0, ls=":",
             label="mortar pair: tangential / normal contact force")
-    ax.axvline(STEADY, color="0.6", lw=0.8, ls=":")
+    ax.axvline(steady, color="0.6", lw=0.8, ls=":")
     ax.set_ylabel("force ratio (-)")
     ax.set_title("Ironing (Puso & Laursen 2004), plane strain, mu = 0.3:\n"
-                 "die pressed 1.4 into a neo-Hookean slab, then slid")
+                 "die pressed 1.4 into a neo-Hookean slab " + length +
+                 " long, then slid")
     ax.grid(True, lw=0.3)
     ax.legend(loc="lower right", fontsize=9)
-    s, e = detrended(sg, rg)
+    s, e = detrended(sg, rg, steady)
     bx.plot(s, e, color="tab:red", lw=1.0, marker=".", ms=3,
             label="node-to-surface")
-    s, e = detrended(sm, rm)
+    s, e = detrended(sm, rm, steady)
     bx.plot(s, e, color="tab:blue", lw=1.4, marker=".", ms=3,
             label="mortar")
     bx.set_xlabel("slide of the die (mm)")
