@@ -137,7 +137,7 @@ read -r n mean lo hi raw detrended <<< "$stats"
 awk -v n="$n" -v mean="$mean" -v lo="$lo" -v hi="$hi" -v raw="$raw" -v d="$detrended" -v s="$mortar_seconds" -v raw_bound="$raw_bound" 'BEGIN {
   printf "mortar (%d s): %d steady rows, |Fx|/|Fz| mean %.5f (mu %+.2f %%), min %.5f, max %.5f, max - min %.2f %% of the mean, about its cubic trend %.3f %%\n", s, n, mean, 100 * (mean / 0.3 - 1), lo, hi, 100 * raw, 100 * d
   exit !(mean > 0.3 && mean < 1.15 * 0.3 && d < 0.02 && raw < raw_bound) }' || { echo "mortar: the die's reaction ratio fails"; exit 1; }
-awk -F, '
+awk -F, -v t_start="$t_start" '
   function abs(x) { return x < 0 ? -x : x }
   NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
   $1 >= t_start - 1e-9 {

@@ -11,6 +11,7 @@
 #include <rubberdyn/base/simd_math.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -236,6 +237,45 @@ namespace rubberdyn
         return y;
       }
     } // namespace lanes_of
+
+
+
+    /**
+     * Whether @p plane cuts the element of lane @p l of @p block: nodes
+     * strictly on both sides of it, beyond 1e-9 of the element's size (a
+     * plane on the element's faces does not cut it). If it does, @p
+     * far_side tells for each node whether it lies on the normal's side.
+     * Pretension sections and cross sections cut alike
+     * (SolidHexElements::cut_sections(), section_resultants()).
+     */
+    inline bool
+    plane_cuts_element(const internal::HexBlock &block,
+                       const unsigned int        l,
+                       const SectionPlane       &plane,
+                       bool                      far_side[internal::n_nodes])
+    {
+      constexpr unsigned int n_nodes = internal::n_nodes;
+      double distance[n_nodes], lo = 0., hi = 0., size = 0.;
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        {
+          distance[a] = 0.;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              distance[a] +=
+                (block.X[a][d][l] - plane.point[d]) * plane.normal[d];
+              size = std::max(size,
+                              std::abs(block.X[a][d][l] - block.X[0][d][l]));
+            }
+          lo = std::min(lo, distance[a]);
+          hi = std::max(hi, distance[a]);
+        }
+      const double tolerance = 1e-9 * size;
+      if (!(lo < -tolerance && hi > tolerance))
+        return false;
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        far_side[a] = distance[a] > tolerance;
+      return true;
+    }
   }   // namespace elements
 } // namespace rubberdyn
 

@@ -223,24 +223,8 @@ namespace rubberdyn
               {
                 if (sections[s].group != block.group)
                   continue;
-                double distance[n_nodes], lo = 0., hi = 0., size = 0.;
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  {
-                    distance[a] = 0.;
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        distance[a] += (block.X[a][d][l] -
-                                        sections[s].point[d]) *
-                                       sections[s].normal[d];
-                        size = std::max(size,
-                                        std::abs(block.X[a][d][l] -
-                                                 block.X[0][d][l]));
-                      }
-                    lo = std::min(lo, distance[a]);
-                    hi = std::max(hi, distance[a]);
-                  }
-                const double tolerance = 1e-9 * size;
-                if (!(lo < -tolerance && hi > tolerance))
+                bool far_side[n_nodes];
+                if (!plane_cuts_element(block, l, sections[s], far_side))
                   continue;
                 if (cut.section[l] != numbers::invalid_unsigned_int)
                   {
@@ -255,7 +239,7 @@ namespace rubberdyn
                 any            = true;
                 ++n_cut[s];
                 for (unsigned int a = 0; a < n_nodes; ++a)
-                  if (distance[a] > tolerance)
+                  if (far_side[a])
                     for (unsigned int d = 0; d < 3; ++d)
                       cut.direction[a][d][l] = sections[s].normal[d];
               }

@@ -387,6 +387,64 @@ namespace rubberdyn
 
 
 
+      /**
+       * The kernel on single blocks for output (section_forces(),
+       * section_resultants()): without bulk viscosity (their forces are
+       * the stress's), with the accepted history, the new history written
+       * into scratch.
+       */
+      class OutputEvaluator
+      {
+      public:
+        OutputEvaluator(const internal::ReferenceShapes &reference,
+                        const double                    *u)
+        {
+          context.reference                = &reference;
+          context.u                        = u;
+          context.v                        = u; // unused: no viscosity
+          context.bulk_viscosity_linear    = 0.;
+          context.bulk_viscosity_quadratic = 0.;
+          context.collapse_ratio           = 0.;
+          std::fill(no_scaling, no_scaling + L, 1.);
+        }
+
+        /**
+         * The forces of @p block (of @p group, SolidHexElements::GroupData:
+         * deduced), its section offsets @p offsets or nullptr; nullptr if
+         * an element failed.
+         */
+        template <typename Group>
+        const BlockResult *
+        evaluate(const internal::HexBlock &block,
+                 const Group              &group,
+                 const double             *history_old,
+                 const double             *offsets)
+        {
+          context.offsets               = offsets;
+          context.kernel                = group.kernel.get();
+          context.density               = group.density;
+          context.stabilization_modulus = group.stabilization_modulus;
+          context.history_old           = history_old;
+          scratch.resize(n_q * L * group.law->n_state_variables());
+          context.history_new = scratch.data();
+          if (!evaluate_block(block,
+                              group.formulation == Formulation::fbar,
+                              context,
+                              no_scaling,
+                              result))
+            return nullptr;
+          return &result;
+        }
+
+      private:
+        BlockContext        context;
+        BlockResult         result;
+        std::vector<double> scratch;
+        double              no_scaling[L];
+      };
+
+
+
       // The user's message for a failed element.
       std::string
       failure_message(const FailureKind      kind,
@@ -533,42 +591,98 @@ namespace rubberdyn
     std::vector<double>
     SolidHexElements::section_forces(const VectorType &u) const
     {
-      // The kernel on the cut blocks only, without bulk viscosity (the
-      // section force is the stress's), writing the history into scratch.
+      // The kernel on the cut blocks only.
       std::vector<double> force(shortenings.size(), 0.);
-      BlockContext        context;
-      context.reference                = &reference;
-      context.u                        = u.begin();
-      context.v                        = u.begin(); // unused: no viscosity
-      context.bulk_viscosity_linear    = 0.;
-      context.bulk_viscosity_quadratic = 0.;
-      context.collapse_ratio           = 0.;
-      BlockResult         block_result;
+      OutputEvaluator     evaluator(reference, u.begin());
       double              offsets[n_nodes][3][L];
-      std::vector<double> scratch;
-      double              no_scaling[L];
-      std::fill(no_scaling, no_scaling + L, 1.);
       for (const SectionCut &cut : cuts)
         {
           const internal::HexBlock &block = blocks[cut.block];
-          const GroupData          &group = groups[block.group];
           block_offsets(cut.block, offsets);
-          context.offsets               = &offsets[0][0][0];
-          context.kernel                = group.kernel.get();
-          context.density               = group.density;
-          context.stabilization_modulus = group.stabilization_modulus;
-          context.history_old = history_old.data() + block.history_offset;
-          scratch.resize(n_q * L * group.law->n_state_variables());
-          context.history_new = scratch.data();
-          if (!evaluate_block(block,
-                              group.formulation == Formulation::fbar,
-                              context,
-                              no_scaling,
-                              block_result))
-            continue;
-          add_section_forces(cut, block.n_active, block_result, force);
+          if (const BlockResult *result =
+                evaluator.evaluate(block,
+                                   groups[block.group],
+                                   history_old.data() + block.history_offset,
+                                   &offsets[0][0][0]))
+            add_section_forces(cut, block.n_active, *result, force);
         }
       return force;
+    }
+
+
+
+    std::vector<SectionResultant>
+    SolidHexElements::section_resultants(
+      const VectorType                &u,
+      const std::vector<SectionPlane> &planes) const
+    {
+      std::vector<SectionResultant> result(planes.size());
+      if (planes.empty())
+        return result;
+      // The kernel on the blocks with a cut lane.
+      OutputEvaluator evaluator(reference, u.begin());
+      double          offsets[n_nodes][3][L];
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const internal::HexBlock &block = blocks[b];
+          // Which plane cuts each lane (as cut_sections(): nodes strictly
+          // on both sides), and which of its nodes lie on the normal's side.
+          unsigned int plane_of_lane[L];
+          bool         far_side[n_nodes][L];
+          bool         any = false;
+          for (unsigned int l = 0; l < L; ++l)
+            {
+              plane_of_lane[l] = numbers::invalid_unsigned_int;
+              if (l >= block.n_active)
+                continue;
+              for (unsigned int s = 0; s < planes.size(); ++s)
+                {
+                  if (planes[s].group != block.group)
+                    continue;
+                  bool far[n_nodes];
+                  if (!plane_cuts_element(block, l, planes[s], far))
+                    continue;
+                  // (An element cut by two planes counts for the first.)
+                  plane_of_lane[l] = s;
+                  any              = true;
+                  for (unsigned int a = 0; a < n_nodes; ++a)
+                    far_side[a][l] = far[a];
+                  break;
+                }
+            }
+          if (!any)
+            continue;
+          const BlockResult *block_result = evaluator.evaluate(
+            block,
+            groups[block.group],
+            history_old.data() + block.history_offset,
+            block_offsets(b, offsets) ? &offsets[0][0][0] : nullptr);
+          if (block_result == nullptr)
+            continue;
+          for (unsigned int l = 0; l < block.n_active; ++l)
+            if (plane_of_lane[l] != numbers::invalid_unsigned_int)
+              {
+                SectionResultant &r = result[plane_of_lane[l]];
+                ++r.n_cut;
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    Tensor<1, 3> x, f;
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        x[d] =
+                          block.X[a][d][l] + u.begin()[block.dofs[a][d][l]];
+                        f[d] = block_result->force[a][d][l];
+                      }
+                    r.centre_sum += x / double(n_nodes);
+                    if (far_side[a][l])
+                      {
+                        r.force += f;
+                        r.moment_about_origin += cross_product_3d(x, f);
+                      }
+                  }
+              }
+        }
+      return result;
     }
   } // namespace elements
 } // namespace rubberdyn

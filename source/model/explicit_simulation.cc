@@ -397,6 +397,8 @@ namespace rubberdyn
       // preload, start_from()).
       if (!model.pretension_sections.empty())
         setup::cut_pretension_sections(model, *elements);
+      // Cross sections: each must cut an element of its part.
+      setup::check_cross_sections(model, *elements);
 
       // Mass scaling: elements whose stable step is below the target get
       // added density.
@@ -774,6 +776,14 @@ namespace rubberdyn
             names.push_back(section.name);
           add_postprocessor(
             std::make_unique<postprocess::PretensionSectionColumns>(names));
+        }
+      if (!model.cross_sections.empty())
+        {
+          names.clear();
+          for (const CrossSection &section : model.cross_sections)
+            names.push_back(section.name);
+          add_postprocessor(
+            std::make_unique<postprocess::CrossSectionColumns>(names));
         }
       if (!output.history_nodes.empty())
         add_postprocessor(std::make_unique<postprocess::HistoryNodeColumns>(

@@ -10,6 +10,7 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
+#include <rubberdyn/postprocess/history_expressions.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -429,6 +430,15 @@ namespace rubberdyn
       for (const auto &plugin : postprocessors)
         for (const std::string &column : plugin->history_columns())
           columns.push_back(column);
+      // Output/History expressions: columns of the others of their row.
+      std::unique_ptr<postprocess::HistoryExpressions> expressions;
+      if (!output.history_expressions.empty())
+        {
+          expressions = std::make_unique<postprocess::HistoryExpressions>(
+            columns, output.history_expressions);
+          for (const std::string &name : expressions->names())
+            columns.push_back(name);
+        }
       const std::string history_path = output.directory + "/time_history.csv";
       if (output.restart)
         {
@@ -462,6 +472,8 @@ namespace rubberdyn
         values.assign({s.time(), s.time_step()});
         for (const auto &plugin : postprocessors)
           plugin->history_values(view, values);
+        if (expressions)
+          expressions->append_values(values);
         const std::string row = history->write_row(values);
         if (root && output.echo_history)
           log << row;

@@ -132,6 +132,27 @@ namespace rubberdyn
 
 
 
+      /**
+       * The error of a section (pretension or cross section, at @p prefix)
+       * whose plane cuts no element of its part.
+       */
+      template <typename Section>
+      [[noreturn]] void
+      throw_plane_misses_part(const Model       &model,
+                              const std::string &prefix,
+                              const Section     &section)
+      {
+        std::ostringstream where;
+        where << "the plane through (" << section.point << ") with normal ("
+              << section.normal << ") cuts no element of the part '"
+              << model.parts[section.part].name
+              << "': it misses the part, or lies on element faces (move it "
+                 "inside a layer of elements)";
+        throw InputError(prefix + section.name + "/Point", where.str());
+      }
+
+
+
       std::vector<unsigned int>
       cut_pretension_sections(const Model                &model,
                               elements::SolidHexElements &hexes)
@@ -161,20 +182,32 @@ namespace rubberdyn
                             ArrayView<unsigned int>(n_cut));
         for (unsigned int s = 0; s < sections.size(); ++s)
           if (n_cut[s] == 0)
-            {
-              const PretensionSection &section = sections[s];
-              std::ostringstream       where;
-              where << "the plane through (" << section.point
-                    << ") with normal (" << section.normal
-                    << ") cuts no element of the part '"
-                    << model.parts[section.part].name
-                    << "': it misses the part, or lies on element faces "
-                       "(move it inside a layer of elements)";
-              throw InputError("Pretension sections/" + section.name +
-                                 "/Point",
-                               where.str());
-            }
+            throw_plane_misses_part(model,
+                                    "Pretension sections/",
+                                    sections[s]);
         return n_cut;
+      }
+
+
+
+      void
+      check_cross_sections(const Model                      &model,
+                           const elements::SolidHexElements &hexes)
+      {
+        if (model.cross_sections.empty())
+          return;
+        std::vector<elements::SectionPlane> planes;
+        for (const CrossSection &section : model.cross_sections)
+          planes.push_back({section.point, section.normal, section.part});
+        // (Where the planes cut depends on the reference positions only.)
+        const VectorType zero(model.partitioner);
+        const std::vector<elements::SectionResultant> resultants =
+          hexes.section_resultants(zero, planes);
+        for (unsigned int s = 0; s < planes.size(); ++s)
+          if (Utilities::MPI::sum(resultants[s].n_cut, model.comm) == 0)
+            throw_plane_misses_part(model,
+                                    "Cross sections/",
+                                    model.cross_sections[s]);
       }
 
 

@@ -70,6 +70,20 @@ namespace rubberdyn
         "columns <name>_displacement_x, _y, _z (mm). A node of the mesh must "
         "lie at the point (within 1e-6 of the mesh's size); names are "
         "letters, digits and '_'. Empty: none.");
+      prm.declare_entry(
+        "History expressions",
+        "",
+        Patterns::Anything(),
+        "Columns of time_history.csv computed from the other columns of the "
+        "same row: 'name: expression' entries separated by ';' (the "
+        "expression is what follows the first ':'), in muparser's syntax "
+        "(+ - * / ^, sqrt, abs, sin, exp, min, max, a < b ? c : d, ...) of "
+        "the names of the columns, 'time' and 'time_step' included, and of "
+        "the expressions before it; the value in the unit that follows from "
+        "the columns'. E.g. 'drop_weight_force: drop_plate_normal_force; "
+        "slip: sqrt((a_displacement_x - b_displacement_x)^2 + "
+        "(a_displacement_y - b_displacement_y)^2)'. Explicit runs (and the "
+        "explicit part of 'quasi-static then explicit'). Empty: none.");
       prm.declare_entry("Checkpoint interval",
                         "0",
                         Patterns::Double(0.),
@@ -152,6 +166,40 @@ namespace rubberdyn
 
 
 
+    std::vector<std::pair<std::string, std::string>>
+    Output::parse_history_expressions(const std::string &text)
+    {
+      const std::string path = "Output/History expressions";
+      std::vector<std::pair<std::string, std::string>> expressions;
+      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+        {
+          const std::size_t colon = entry.find(':');
+          if (colon == std::string::npos)
+            throw InputError(path,
+                             "the entry '" + entry +
+                               "' is not of the form 'name: expression'");
+          const std::string name = Utilities::trim(entry.substr(0, colon));
+          const std::string expression =
+            Utilities::trim(entry.substr(colon + 1));
+          if (name.empty() ||
+              name.find_first_not_of(
+                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                "0123456789_") != std::string::npos)
+            throw InputError(path,
+                             "the name '" + name + "' of the entry '" + entry +
+                               "' must be letters, digits and '_' only");
+          for (const auto &other : expressions)
+            if (other.first == name)
+              throw InputError(path, "the name '" + name + "' is given twice");
+          if (expression.empty())
+            throw InputError(path, "the expression of '" + name + "' is empty");
+          expressions.emplace_back(name, expression);
+        }
+      return expressions;
+    }
+
+
+
     void
     Output::parse_parameters(ParameterHandler &prm)
     {
@@ -166,6 +214,8 @@ namespace rubberdyn
       checkpoint_interval     = prm.get_double("Checkpoint interval");
       restart                 = prm.get_bool("Restart from checkpoint");
       history_nodes           = parse_history_nodes(prm.get("History nodes"));
+      history_expressions =
+        parse_history_expressions(prm.get("History expressions"));
       prm.leave_subsection();
     }
   } // namespace parameters

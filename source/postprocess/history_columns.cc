@@ -183,6 +183,93 @@ namespace rubberdyn
 
 
 
+    CrossSectionColumns::CrossSectionColumns(
+      const std::vector<std::string> &section_names)
+      : section_names(section_names)
+    {}
+
+
+
+    std::string
+    CrossSectionColumns::name() const
+    {
+      return "cross sections";
+    }
+
+
+
+    std::vector<std::string>
+    CrossSectionColumns::history_columns() const
+    {
+      std::vector<std::string> columns;
+      for (const std::string &section : section_names)
+        {
+          add_vector_columns(section + "_force", columns);
+          add_vector_columns(section + "_moment", columns);
+          add_vector_columns(section + "_centre", columns);
+          for (const char *suffix :
+               {"_axial_force", "_shear_force", "_torque", "_bending_moment"})
+            columns.push_back(section + suffix);
+        }
+      return columns;
+    }
+
+
+
+    void
+    CrossSectionColumns::history_values(const SimulationView &view,
+                                        std::vector<double>  &values)
+    {
+      const std::vector<model::CrossSection> &sections =
+        view.model.cross_sections;
+      std::vector<elements::SectionPlane> planes;
+      for (const model::CrossSection &section : sections)
+        planes.push_back({section.point, section.normal, section.part});
+      const std::vector<elements::SectionResultant> local =
+        view.elements.section_resultants(view.solver.displacement(), planes);
+      // One sum over the ranks: force, moment about the origin, centre sum
+      // and the number of cut elements of each section.
+      std::vector<double> sums;
+      for (const elements::SectionResultant &r : local)
+        {
+          for (unsigned int d = 0; d < 3; ++d)
+            sums.push_back(r.force[d]);
+          for (unsigned int d = 0; d < 3; ++d)
+            sums.push_back(r.moment_about_origin[d]);
+          for (unsigned int d = 0; d < 3; ++d)
+            sums.push_back(r.centre_sum[d]);
+          sums.push_back(r.n_cut);
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums),
+                                  view.model.comm,
+                                  dealii::ArrayView<double>(sums));
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        {
+          const double        *sum = &sums[10 * s];
+          dealii::Tensor<1, 3> force, moment, centre;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              force[d]  = sum[d];
+              moment[d] = sum[3 + d];
+              centre[d] = sum[9] > 0. ? sum[6 + d] / sum[9] : 0.;
+            }
+          // About the centre: sum (x - c) x f = sum x x f - c x F.
+          moment -= dealii::cross_product_3d(centre, force);
+          const dealii::Tensor<1, 3> &n      = sections[s].normal;
+          const double                axial  = force * n;
+          const double                torque = moment * n;
+          add_vector_values(force, values);
+          add_vector_values(moment, values);
+          add_vector_values(centre, values);
+          values.push_back(axial);
+          values.push_back((force - axial * n).norm());
+          values.push_back(torque);
+          values.push_back((moment - torque * n).norm());
+        }
+    }
+
+
+
     PartColumns::PartColumns(const std::vector<std::string> &part_names)
       : part_names(part_names)
     {}

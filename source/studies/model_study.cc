@@ -202,6 +202,61 @@ namespace rubberdyn
 
 
 
+      /** A plane across a deformable part, as a section gives it. */
+      struct PartPlane
+      {
+        unsigned int part = 0;
+        Point<3>     point;
+        Tensor<1, 3> normal;
+      };
+
+      /**
+       * `Part`, `Point` and `Normal` of the section at @p path (the current
+       * subsection of @p prm), for pretension and cross sections alike.
+       *
+       * @throws InputError naming the entry: an unknown, rigid or mixed u-p
+       *   part (@p kind names the section in the message), a zero normal.
+       */
+      PartPlane
+      parse_part_plane(ParameterHandler   &prm,
+                       const std::string  &path,
+                       const std::string  &kind,
+                       const model::Model &m)
+      {
+        PartPlane         plane;
+        const std::string part  = Utilities::trim(prm.get("Part"));
+        bool              found = false;
+        for (unsigned int p = 0; p < m.parts.size(); ++p)
+          if (m.parts[p].name == part)
+            {
+              found      = true;
+              plane.part = p;
+            }
+        if (!found)
+          throw InputError(path + "/Part",
+                           "names no part ('" + part.substr(0, 40) +
+                             "' is not in Parts/Names)");
+        const model::Part &cut_part = m.parts[plane.part];
+        if (cut_part.rigid)
+          throw InputError(path + "/Part",
+                           "the part '" + part + "' is rigid: a " + kind +
+                             " cuts a deformable part");
+        if (cut_part.formulation == elements::Formulation::mixed_up)
+          throw InputError(path + "/Part",
+                           "the part '" + part +
+                             "' uses the mixed u-p element, which takes no " +
+                             kind + " yet; use 'F-bar'");
+        plane.point = Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
+        const Tensor<1, 3> normal =
+          parse_vector(prm.get("Normal"), path + "/Normal");
+        if (!(normal.norm() > 0.))
+          throw InputError(path + "/Normal", "must not be zero");
+        plane.normal = normal / normal.norm();
+        return plane;
+      }
+
+
+
       /** `Pretension sections`: the names, then one subsection each. */
       void
       declare_pretension_sections(ParameterHandler            &prm,
@@ -288,37 +343,12 @@ namespace rubberdyn
                                  "the quasi-static load path");
             prm.enter_subsection(name);
             model::PretensionSection section;
-            section.name            = name;
-            const std::string part  = Utilities::trim(prm.get("Part"));
-            bool              found = false;
-            for (unsigned int p = 0; p < m.parts.size(); ++p)
-              if (m.parts[p].name == part)
-                {
-                  found        = true;
-                  section.part = p;
-                }
-            if (!found)
-              throw InputError(path + "/Part",
-                               "names no part ('" + part.substr(0, 40) +
-                                 "' is not in Parts/Names)");
-            const model::Part &cut_part = m.parts[section.part];
-            if (cut_part.rigid)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' is rigid: a section cuts a deformable "
-                                 "part");
-            if (cut_part.formulation == elements::Formulation::mixed_up)
-              throw InputError(path + "/Part",
-                               "the part '" + part +
-                                 "' uses the mixed u-p element, which takes "
-                                 "no pretension section yet; use 'F-bar'");
-            section.point =
-              Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
-            const Tensor<1, 3> normal =
-              parse_vector(prm.get("Normal"), path + "/Normal");
-            if (!(normal.norm() > 0.))
-              throw InputError(path + "/Normal", "must not be zero");
-            section.normal        = normal / normal.norm();
+            section.name = name;
+            const PartPlane plane =
+              parse_part_plane(prm, path, "pretension section", m);
+            section.part          = plane.part;
+            section.point         = plane.point;
+            section.normal        = plane.normal;
             section.force_control = prm.get("Control") == "force";
             section.target_force  = prm.get_double("Target force");
             section.shortening    = prm.get_double("Shortening");
@@ -344,6 +374,92 @@ namespace rubberdyn
                                  "], not " + prm.get("Lock time"));
             prm.leave_subsection();
             m.pretension_sections.push_back(section);
+          }
+        prm.leave_subsection();
+      }
+
+
+
+      /** `Cross sections`: the names, then one subsection each. */
+      void
+      declare_cross_sections(ParameterHandler            &prm,
+                             const registry::ListedNames &names)
+      {
+        prm.enter_subsection("Cross sections");
+        prm.declare_entry(
+          "Names", "", Patterns::Anything(),
+          "Names of the cross sections for output, separated by commas; "
+          "each has a subsection of its name. A cross section is a plane "
+          "across a deformable part (LS-DYNA's *DATABASE_CROSS_SECTION); "
+          "the explicit run's time history gets, at the plane, the "
+          "resultant of the part's stresses on the side the Normal points "
+          "from: <name>_force_x/_y/_z (kN), <name>_moment_x/_y/_z (kN mm, "
+          "about the current centre of the cut elements), "
+          "<name>_centre_x/_y/_z (mm, that centre), "
+          "<name>_axial_force (kN, along the Normal: tension positive), "
+          "<name>_shear_force (kN, magnitude across the Normal), "
+          "<name>_torque (kN mm, about the Normal) and "
+          "<name>_bending_moment (kN mm, magnitude across the Normal). "
+          "Explicit runs (and the explicit part of 'quasi-static then "
+          "explicit').");
+        for (const std::string &name :
+             names_with_template(names, "Cross sections"))
+          {
+            prm.enter_subsection(name);
+            prm.declare_entry("Part", "", Patterns::Anything(),
+                              "The deformable part the plane cuts (F-bar or "
+                              "displacement element): the resultant is that "
+                              "of the part's own elements that the plane "
+                              "cuts, whatever else is attached to them.");
+            prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
+                              "A point of the plane (mm). Put the plane "
+                              "inside a layer of elements, not on their "
+                              "faces.");
+            prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
+                              "Normal of the plane (need not be a unit "
+                              "vector): the resultant is that of the "
+                              "traction sigma n on the plane, the force "
+                              "the material on the Normal's side exerts on "
+                              "the other side (tension along the Normal "
+                              "positive).");
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
+
+
+
+      /**
+       * Read `Cross sections` into @p m (after its parts).
+       *
+       * @throws InputError naming the entry: an unknown, rigid or mixed u-p
+       *   part, a zero normal, or a section in a quasi-static run.
+       */
+      void
+      parse_cross_sections(ParameterHandler                  &prm,
+                           const parameters::TimeIntegration &time,
+                           model::Model                      &m)
+      {
+        prm.enter_subsection("Cross sections");
+        for (const std::string &name : listed_names(prm))
+          {
+            const std::string path = "Cross sections/" + name;
+            if (time.scheme == "quasi-static")
+              throw InputError("Time integration/Scheme",
+                               "the cross section '" + name +
+                                 "' reports in explicit runs only (use "
+                                 "'explicit' or 'quasi-static then "
+                                 "explicit')");
+            prm.enter_subsection(name);
+            model::CrossSection section;
+            section.name = name;
+            const PartPlane plane =
+              parse_part_plane(prm, path, "cross section", m);
+            section.part   = plane.part;
+            section.point  = plane.point;
+            section.normal = plane.normal;
+            prm.leave_subsection();
+            m.cross_sections.push_back(section);
           }
         prm.leave_subsection();
       }
@@ -575,6 +691,7 @@ namespace rubberdyn
       prm.leave_subsection();
 
       declare_pretension_sections(prm, names);
+      declare_cross_sections(prm, names);
       declare_contact_pairs(prm, names);
     }
 
@@ -592,6 +709,11 @@ namespace rubberdyn
       time_integration.parse_parameters(prm);
       contact.parse_parameters(prm);
       output.parse_parameters(prm);
+      if (time_integration.scheme == "quasi-static" &&
+          !output.history_expressions.empty())
+        throw InputError("Output/History expressions",
+                         "are computed in explicit runs only (Time "
+                         "integration/Scheme is 'quasi-static')");
 
       model = std::make_unique<model::Model>(MPI_COMM_WORLD);
       model::Model &m = *model;
@@ -926,6 +1048,7 @@ namespace rubberdyn
       prm.leave_subsection();
 
       parse_pretension_sections(prm, time_integration, m);
+      parse_cross_sections(prm, time_integration, m);
       parse_contact_pairs(prm, require_boundary_ids, m);
 
       m.setup();

@@ -38,11 +38,14 @@
 #include <vector>
 
 #include "../tests.h"
+#include "mesh_tests.h"
 
 using namespace dealii;
 using rubberdyn::InputError;
 using rubberdyn::io::read_gmsh_mesh;
 using testing::check;
+using testing::g6;
+using testing::mesh_directory;
 using testing::out;
 using testing::sci;
 
@@ -50,16 +53,6 @@ namespace
 {
   const std::string entry = "Mesh/Mesh file";
 
-  const std::string mesh_directory =
-    std::string(SOURCE_DIR) + "/../../parameter_files/meshes/";
-
-  std::string
-  g6(const double value)
-  {
-    std::ostringstream s;
-    s << std::setprecision(6) << value;
-    return s.str();
-  }
 
   /**
    * Print cells and volume per material id, faces and area per boundary

@@ -36,26 +36,18 @@
 #include <sstream>
 
 #include "../tests.h"
+#include "mesh_tests.h"
 
 using namespace dealii;
 using rubberdyn::io::read_gmsh_mesh;
 using testing::check;
+using testing::g6;
+using testing::mesh_directory;
 using testing::out;
 using testing::sci;
 
 namespace
 {
-  const std::string mesh_directory =
-    std::string(SOURCE_DIR) + "/../../parameter_files/meshes/";
-
-  std::string
-  g6(const double value)
-  {
-    std::ostringstream s;
-    s << std::setprecision(6) << value;
-    return s.str();
-  }
-
   /** Read a shipped mesh (must succeed). */
   void
   read(Triangulation<3> &tria, const std::string &name)

@@ -30,6 +30,31 @@ study_rubber_part() {
 PRM
 }
 
+# steel_bar_model [INITIAL_VELOCITY]: the top of a Model parameter file
+# for meshes/bar.msh (100 x 10 x 10 mm along x, 20 x 2 x 2 cells; $source_dir
+# set): the study, the mesh and the part "bar" of elastic steel (E 210 GPa,
+# nu 0.3, 7.85e-6 kg/mm^3), optionally with an initial velocity (mm/ms).
+steel_bar_model() {
+  cat <<PRM
+set Study = Model
+subsection Mesh
+  set Mesh file = $source_dir/parameter_files/meshes/bar.msh
+end
+subsection Parts
+  set Names = bar
+  subsection bar
+    set Material ids        = 1
+    set Element formulation = F-bar
+    set Model               = Elastic
+    set Young's modulus     = 210
+    set Poisson's ratio     = 0.3
+    set Density             = 7.85e-6
+    set Initial velocity    = ${1:-0, 0, 0}
+  end
+end
+PRM
+}
+
 # bonded_block_parts MOTION: the Parts subsection of meshes/bonded_block.msh
 # with the study's rubber (material id 1) and the steel plate (id 2) as a
 # rigid part in equilibrium on the load path, free in MOTION (Rigid motion).

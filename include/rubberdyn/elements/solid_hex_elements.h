@@ -199,6 +199,27 @@ namespace rubberdyn
       unsigned int group = 0;
     };
 
+    /**
+     * What one rank's elements give a cross section
+     * (SolidHexElements::section_resultants()); the caller sums over the
+     * ranks.
+     */
+    struct SectionResultant
+    {
+      /**
+       * Sum of the internal forces of the cut elements at their nodes on
+       * the normal's side of the plane (kN): the resultant of the traction
+       * sigma n on the plane.
+       */
+      Tensor<1, 3> force;
+      /** Sum of x times those forces, x the nodes' current positions (kN mm). */
+      Tensor<1, 3> moment_about_origin;
+      /** Sum of the cut elements' current centres (mm). */
+      Tensor<1, 3> centre_sum;
+      /** Number of cut elements. */
+      unsigned int n_cut = 0;
+    };
+
     /** Formulation of the solid element. */
     enum class Formulation
     {
@@ -463,6 +484,19 @@ namespace rubberdyn
        */
       std::vector<double>
       section_forces(const VectorType &u) const;
+
+      /**
+       * The resultants through the planes @p planes (cross sections for
+       * output, not pretension sections) at displacement @p u (ghosted):
+       * for each, the internal forces of this rank's elements of its group
+       * that the plane cuts, at their nodes on the normal's side, without
+       * bulk viscosity, with the accepted history (as section_forces()).
+       * Each call finds the cut elements anew: meant for history rows, not
+       * for every step.
+       */
+      std::vector<SectionResultant>
+      section_resultants(const VectorType                &u,
+                         const std::vector<SectionPlane> &planes) const;
 
       /** The current shortenings (mm). */
       const std::vector<double> &

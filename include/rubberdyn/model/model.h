@@ -206,6 +206,24 @@ namespace rubberdyn
     };
 
     /**
+     * A cross section for output (`Cross sections/<name>`, LS-DYNA's
+     * *DATABASE_CROSS_SECTION): a plane across a deformable part through
+     * which the resultant force and moment are reported
+     * (postprocess::CrossSectionColumns).
+     */
+    struct CrossSection
+    {
+      /** Name (the columns `<name>_force_x`, ..., `<name>_bending_moment`). */
+      std::string name;
+      /** Index of the part it cuts. */
+      unsigned int part = 0;
+      /** A point of the plane (mm). */
+      Point<3> point;
+      /** Unit normal of the plane: the side the resultant acts from. */
+      Tensor<1, 3> normal;
+    };
+
+    /**
      * The complete model, distributed over the ranks of its communicator.
      */
     class Model
@@ -261,6 +279,7 @@ namespace rubberdyn
       std::vector<BoundaryCondition>      boundary_conditions;
       std::vector<RigidSurfaceDefinition> rigid_surfaces;
       std::vector<PretensionSection>      pretension_sections;
+      std::vector<CrossSection>           cross_sections;
       std::vector<ContactPairDefinition>  contact_pairs;
 
     private:

@@ -77,6 +77,17 @@ namespace rubberdyn
                               elements::SolidHexElements &hexes);
 
       /**
+       * Check that each of the model's cross sections cuts an element of
+       * its part in @p hexes. Collective.
+       *
+       * @throws InputError naming `Cross sections/<name>/Point` for one that
+       *   cuts none.
+       */
+      void
+      check_cross_sections(const Model                      &model,
+                           const elements::SolidHexElements &hexes);
+
+      /**
        * One SurfaceLoads contribution for all the pressure and traction
        * conditions of the model, or nullptr if there is none. Appends to
        * @p condition_of_load the condition of each of its loads.

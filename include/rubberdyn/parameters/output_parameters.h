@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -52,6 +53,12 @@ namespace rubberdyn
       std::vector<HistoryNode> history_nodes;
 
       /**
+       * `History expressions`, in the order given: each a column name and
+       * its expression (postprocess::HistoryExpressions).
+       */
+      std::vector<std::pair<std::string, std::string>> history_expressions;
+
+      /**
        * Declare the entries in subsection `Output`. (`Output directory`
        * is declared here too: every study writes somewhere.)
        */
@@ -67,6 +74,17 @@ namespace rubberdyn
        */
       static std::vector<HistoryNode>
       parse_history_nodes(const std::string &text);
+
+      /**
+       * The entries of `History expressions` ('name: expression; ...'; the
+       * expression is what follows the first ':').
+       *
+       * @throws InputError naming `Output/History expressions` for an entry
+       *   without ':', a name that is not letters, digits and '_' or is
+       *   given twice, or an empty expression.
+       */
+      static std::vector<std::pair<std::string, std::string>>
+      parse_history_expressions(const std::string &text);
 
       /** Read them back (from the top level of @p prm). */
       void

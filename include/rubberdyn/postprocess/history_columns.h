@@ -136,6 +136,49 @@ namespace rubberdyn
 
 
     /**
+     * Per cross section (model::CrossSection, `Cross sections/<name>`;
+     * LS-DYNA's *DATABASE_CROSS_SECTION): the resultant of the part's
+     * stresses on the plane, from the internal forces of the part's
+     * elements that the plane cuts at their nodes on the normal's side
+     * (elements::SolidHexElements::section_resultants(); without bulk
+     * viscosity):
+     * `<name>_force_x/_y/_z` (kN, the traction sigma n integrated over the
+     * plane), `<name>_moment_x/_y/_z` (kN mm, about the current centre c
+     * of the cut elements: @f$\sum_a (x_a - c) \times f_a@f$),
+     * `<name>_centre_x/_y/_z` (mm, that centre c, the mean of the cut
+     * elements' current centres),
+     * `<name>_axial_force` (kN, along the normal n of the reference
+     * configuration, tension positive), `<name>_shear_force` (kN, the
+     * magnitude across n), `<name>_torque` (kN mm, about n) and
+     * `<name>_bending_moment` (kN mm, the magnitude across n). In static
+     * equilibrium these are exactly the resultant and moment of the
+     * external forces on the normal's side (the internal forces of the
+     * uncut elements cancel), the check of tests/model/cross_section.
+     */
+    class CrossSectionColumns : public Postprocessor
+    {
+    public:
+      /** The sections' names, in the order of model::Model::cross_sections. */
+      explicit CrossSectionColumns(
+        const std::vector<std::string> &section_names);
+
+      std::string
+      name() const override;
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      /** Collective: the sums are taken over the ranks. */
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double> &  values) override;
+
+    private:
+      std::vector<std::string> section_names;
+    };
+
+
+    /**
      * Per rigid body (of a rigid surface, or a rigid part):
      * `<name>_position_x/_y/_z` (mm, of its reference point: a rigid part's
      * centre of mass), `<name>_velocity_x/_y/_z` (mm/ms) and
