@@ -74,20 +74,22 @@
 // their plane: the brace's hole nodes are at z = 59.99999999999999.)
 //
 // Cells (tests/io/bushing_mesh.cc checks them and every volume and area):
-// n = 1: 6958 (bolt 2340, nut 192, washer 240, inner sleeve 768, rubber
+// n = 1: 6874 (bolt 2256, nut 192, washer 240, inner sleeve 768, rubber
 // 1344, plastic sleeve 576, metal sleeve 576, plate 300, brace 612,
-// support 6, drop weight 4); n = 2: 52784 (16944, 1344, 2112, 5760, 9792,
-// 4608, 4992, 2400, 4752, 48, 32).
+// support 6, drop weight 4); n = 2: 27 104 (4440, 672, 1056, 2880, 9792,
+// 2304, 2304, 1200, 2376, 48, 32).
 //
 // Cross-sections: an O-grid, 4 n_quarter elements around every round
-// part (all start at 45 degrees, so that a quarter faces one side of a
-// square). Round hulls are polygons of N = 4 n_quarter flat facets with
-// their corners on the circles: an annulus a < r < b has the area
-// (N / 2) sin(2 pi / N) (b^2 - a^2), short of the circles' by 1.14 % at
-// N = 24 (n = 1) and 0.29 % at N = 48 (n = 2) (see bolted_plates.geo).
-// The bolt's core is a square (half-width bolt_radius / 2) with a ring A
-// to r = bolt_radius; the brace's hole and the plate's eye are O-grid
-// rings blended into squares, and blocks make the rest of the plates.
+// part but bolt and nut, which have 4 bolt_quarter around (all start at
+// 45 degrees, so that a quarter faces one side of a square). Round hulls
+// are polygons of N flat facets (N = 4 n_quarter, or 4 bolt_quarter for
+// bolt and nut) with their corners on the circles: an annulus a < r < b
+// has the area (N / 2) sin(2 pi / N) (b^2 - a^2), short of the circles'
+// by 1.14 % at N = 24 (n = 1; bolt and nut at every n) and 0.29 % at
+// N = 48 (n = 2) (see bolted_plates.geo). The bolt's core is a square
+// (half-width bolt_radius / 2) with a ring A to r = bolt_radius; the
+// brace's hole and the plate's eye are O-grid rings blended into
+// squares, and blocks make the rest of the plates.
 //
 // Tags (parameter_files/meshes/README.md): physical volume = material id,
 // physical surface = boundary id; every boundary face is in exactly one.
@@ -114,20 +116,30 @@
 //   34 support top   35 support's other faces
 //   36 drop weight bottom   37 drop weight's other faces
 //
-// Mesh density: n multiplies every element count (n = 1: a coarse mesh of
-// a few thousand cells for tests; the default n = 2 is the study's mesh).
-// Thin parts (sleeves, washer, brace, plate) have n_thin = 2 n elements
-// through their thickness; the other counts follow element sizes of about 4 / n
-// (axial, radial) and 10 / n to 15 / n (in the plane of brace and plate).
+// Mesh density: n multiplies the element counts (n = 1: a coarse mesh of
+// a few thousand cells for tests; the default n = 2 is the study's mesh)
+// but two: the thin parts (sleeves, washer, brace, plate) have n_thin = 2
+// elements through their thickness, and the bolt's and nut's cross-section
+// has bolt_quarter = 6 elements per quarter circle at every n, so that no
+// steel element is much below 1 mm (the explicit time step). The other
+// counts follow element sizes of about 4 / n (axial, radial) and 10 / n
+// to 15 / n (in the plane of brace and plate).
 
 // ------------------------------------------------------------ parameters
 // Each with its reason (doc/bushing.md has the same table).
 // Mesh density: 2 is the study's mesh, 1 the tests' coarse mesh.
 DefineConstant[ n = 2 ];
 // Elements through the thickness of the thin parts (sleeves, washer,
-// brace, plate): at least 2; 2 n refines them with the rest (n_thin = 2
-// at n = 2 gives 40 280 cells instead of 52 784).
-DefineConstant[ n_thin = 2 * n ];
+// brace, plate): at least 2 (the issue's minimum). 2 at every n keeps the
+// thinnest steel element, the metal sleeve's, 1 mm thick (2 n made it
+// 0.5 mm at n = 2 and halved the explicit time step).
+DefineConstant[ n_thin = 2 ];
+// Elements per quarter circle of bolt, nut and head (the bolt's core a
+// square of bolt_quarter x bolt_quarter cells, its ring to r =
+// bolt_radius 2 bolt_quarter / 6 elements radially): 6 keeps the bolt's
+// smallest edge at 1.17 mm (the ring's corner cells; the core's cells
+// 1.33 mm), which 6 n made 0.59 mm at n = 2. At least 2.
+DefineConstant[ bolt_quarter = 6 ];
 // Bolt M16 x 2, grade 10.9 (ISO 4014):
 //   nominal diameter 16;
 DefineConstant[ bolt_radius = 8. ];
@@ -185,8 +197,11 @@ DefineConstant[ weight_length = 60. ];
 DefineConstant[ weight_width = 60. ];
 DefineConstant[ weight_height = 40. ];
 DefineConstant[ weight_gap = 0.5 ];
-// The shank's node layer for the pretension section: a plane across the
-// shank between washer (z = 0) and brace (z = L), inside the inner sleeve.
+// The pretension section: a plane across the shank between washer (z = 0)
+// and brace (z = L), inside the inner sleeve. A layer of shank elements
+// (4 / n high) is centred on it, so that the plane cuts that layer's
+// elements halfway and lies on no element face (doc/quasi_static.md,
+// "Bolt pretension": a plane on element faces cuts none).
 DefineConstant[ section_z = inner_sleeve_length / 2. ];
 
 // -------------------------------------------------- derived and checked
@@ -208,14 +223,18 @@ EndIf
 If (n_thin < 2 || n_thin != Floor(n_thin))
   Error("bushing.geo: n_thin must be an integer of at least 2"); Abort;
 EndIf
+If (bolt_quarter < 2 || bolt_quarter != Floor(bolt_quarter))
+  Error("bushing.geo: bolt_quarter must be an integer of at least 2");
+  Abort;
+EndIf
 If (!(bolt_radius < hole_radius && hole_radius < head_radius &&
       head_radius <= nut_radius && hole_radius < inner_sleeve_radius &&
       inner_sleeve_radius < rubber_radius && metal_radius < lip_radius &&
       hole_radius < washer_radius))
   Error("bushing.geo: the radii must increase outwards"); Abort;
 EndIf
-If (!(0. < section_z && section_z < L))
-  Error("bushing.geo: section_z must lie between washer (0) and brace (L)");
+If (!(2. / n < section_z && section_z < L - 2. / n))
+  Error("bushing.geo: section_z's element layer must lie within 0 < z < L");
   Abort;
 EndIf
 If (!(lip_height < plate_bottom && plate_top < L - lip_height))
@@ -235,6 +254,7 @@ EndIf
 
 // ---------------------------------------------------------- mesh counts
 n_quarter = 6 * n;          // elements per quarter circle (24 n around)
+ring_q = n_quarter;         // the Rings macro's elements per quarter
 axial_size = 4. / n;        // element length along the axis and radially
 plane_size = 10. / n;       // in the brace's plane
 plate_size = 15. / n;       // in the plate's plane (its O-grid side: 90 / 6n)
@@ -253,7 +273,8 @@ stage_shift = 1000. * Ceil((z_head + head_height - z_end + 1000.) / 1000.);
 
 // ---------------------------------------------------------------- macros
 // Rings: annular O-grid rings about the z axis. Input ring_r[] (radii,
-// increasing), ring_n[] (elements radially in each ring), ring_z. A radial
+// increasing), ring_n[] (elements radially in each ring), ring_z, ring_q
+// (elements per quarter circle). A radial
 // line at 45 degrees (nodes at exact fractions of each ring's width),
 // rotated four times by 90 degrees (nodes at exact fractions of the
 // angle; the last rotation's line merges with the first). Output
@@ -276,7 +297,7 @@ Macro Rings
   For rings_k In {0:3}
     // For each line: its rotated copy, the surface and the two arcs.
     rings_out[] = Extrude {{0., 0., 1.}, {0., 0., 0.}, Pi / 2.} {
-      Curve{rings_lines[]}; Layers{n_quarter}; Recombine;
+      Curve{rings_lines[]}; Layers{ring_q}; Recombine;
     };
     For rings_i In {0:#ring_n[] - 1}
       ring_s[] += rings_out[4 * rings_i + 1];
@@ -316,7 +337,7 @@ Macro FindArc
 Return
 
 // SquareCore: the bolt's core, a square of half-width core_a (corners at
-// 45 + 90 k degrees) with n_quarter x n_quarter cells, and ring A from
+// 45 + 90 k degrees) with core_q x core_q cells, and ring A from
 // its sides to the arcs core_arc[k] (signed, counter-clockwise; end
 // points core_rim[k] at 45 + 90 k degrees), core_n elements radially.
 // Output core_s[] (the core, then ring A's four quarters).
@@ -335,7 +356,7 @@ Macro SquareCore
     core_spoke[core_k] = newl;
     Line(core_spoke[core_k]) = {core_corner[core_k], core_rim[core_k]};
   EndFor
-  Transfinite Curve {core_side[]} = n_quarter + 1;
+  Transfinite Curve {core_side[]} = core_q + 1;
   Transfinite Curve {core_spoke[]} = core_n + 1;
   core_loop = newll;
   Curve Loop(core_loop) = {core_side[]};
@@ -480,6 +501,8 @@ Return
 // r = bolt_radius (the shank), and the nut's ring from the shank to
 // nut_radius (its bore is the shank: they share the nodes of r =
 // bolt_radius over the nut's height).
+// Bolt, nut and head have bolt_quarter elements per quarter circle.
+ring_q = bolt_quarter;
 ring_z = z_nut_top;
 count_length = nut_radius - bolt_radius; count_size = axial_size; Call Count;
 ring_r[] = {bolt_radius, nut_radius}; ring_n[] = {count};
@@ -491,7 +514,13 @@ For k In {0:3}
   arc_s = nut_ring[k]; arc_R = bolt_radius; arc_k = k; Call FindArc;
   core_arc[] += arc; core_rim[] += arc_start;
 EndFor
-core_a = bolt_radius / 2.; core_z = z_nut_top; core_n = 2 * n;
+core_a = bolt_radius / 2.; core_z = z_nut_top; core_q = bolt_quarter;
+// Ring A: 2 elements radially at the default (1.17 mm at the core's
+// corners, 2 mm at its sides' middles).
+core_n = Round(bolt_quarter / 3.);
+If (core_n < 1)
+  core_n = 1;
+EndIf
 Call SquareCore;
 shank_section[] = core_s[];
 
@@ -511,16 +540,24 @@ ext_out[] = Extrude {0., 0., -bolt_end_length} {
 Call Extruded;
 bolt_volumes[] += ext_volume[];
 bolt_end_faces[] = ext_top[];
-// The shank up to the section (a node layer at z = section_z) and on to
-// the head's underside.
-count_length = section_z - z_nut_top; Call Count;
-ext_out[] = Extrude {0., 0., section_z - z_nut_top} {
+// The shank up to the section's element layer (axial_size high, centred
+// on z = section_z, so that the section plane cuts its elements halfway),
+// through it, and on to the head's underside.
+section_low = section_z - axial_size / 2.;
+section_high = section_z + axial_size / 2.;
+count_length = section_low - z_nut_top; Call Count;
+ext_out[] = Extrude {0., 0., section_low - z_nut_top} {
   Surface{shank_section[]}; Layers{count}; Recombine;
 };
 Call Extruded;
 bolt_volumes[] += ext_volume[];
-count_length = z_head - section_z; Call Count;
-ext_out[] = Extrude {0., 0., z_head - section_z} {
+ext_out[] = Extrude {0., 0., axial_size} {
+  Surface{ext_top[]}; Layers{1}; Recombine;
+};
+Call Extruded;
+bolt_volumes[] += ext_volume[];
+count_length = z_head - section_high; Call Count;
+ext_out[] = Extrude {0., 0., z_head - section_high} {
   Surface{ext_top[]}; Layers{count}; Recombine;
 };
 Call Extruded;
@@ -541,6 +578,7 @@ ext_out[] = Extrude {0., 0., head_height} {
 Call Extruded;
 bolt_volumes[] += ext_volume[];
 stage_volumes_0[] = {bolt_volumes[], nut_volumes[]};
+ring_q = n_quarter;           // the other parts
 
 // -------------------------------------------------------- stage 1: washer
 shift = 1 * stage_shift;
