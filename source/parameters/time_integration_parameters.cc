@@ -22,8 +22,12 @@ namespace rubberdyn
         "'quasi-static': static equilibrium by Newton-Raphson (no inertia), "
         "with the boundary-condition functions of t as load paths, t running "
         "from 0 to the Quasi-static end time (doc/quasi_static.md). "
-        "'quasi-static then explicit': the explicit run from the "
-        "quasi-static end state (not implemented yet).");
+        "'quasi-static then explicit': the load path first (a bolt "
+        "preload), then the explicit run to the End time from its "
+        "converged state: displacements, material history, locked "
+        "pretension sections and contact friction state, at rest but for "
+        "the parts' initial velocities (doc/quasi_static.md, \"The "
+        "hand-off\").");
       prm.declare_entry("Quasi-static end time", "1", Patterns::Double(0.),
                         "Quasi-static scheme: the pseudo-time t at the end of "
                         "the load path (-; the t of the boundary-condition "
