@@ -108,39 +108,69 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /**
+       * The 'name: rest' entries of @p text, separated by ';', as pairs
+       * of the trimmed name and the trimmed rest (what follows the first
+       * ':'), for `History nodes` and `History expressions` alike.
+       *
+       * @throws InputError naming @p path for an entry without ':' (the
+       *   message shows @p form), a name that is not letters, digits and
+       *   '_', or a name given twice.
+       */
+      std::vector<std::pair<std::string, std::string>>
+      named_entries(const std::string &text,
+                    const std::string &path,
+                    const std::string &form)
+      {
+        std::vector<std::pair<std::string, std::string>> entries;
+        for (const std::string &entry : Utilities::split_string_list(text, ';'))
+          {
+            const std::size_t colon = entry.find(':');
+            if (colon == std::string::npos)
+              throw InputError(path,
+                               "the entry '" + entry +
+                                 "' is not of the form '" + form + "'");
+            const std::string name = Utilities::trim(entry.substr(0, colon));
+            if (name.empty() ||
+                name.find_first_not_of(
+                  "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                  "0123456789_") != std::string::npos)
+              throw InputError(path,
+                               "the name '" + name + "' of the entry '" +
+                                 entry +
+                                 "' must be letters, digits and '_' only");
+            for (const auto &other : entries)
+              if (other.first == name)
+                throw InputError(path,
+                                 "the name '" + name + "' is given twice");
+            entries.emplace_back(name,
+                                 Utilities::trim(entry.substr(colon + 1)));
+          }
+        return entries;
+      }
+    } // namespace
+
+
+
     std::vector<Output::HistoryNode>
     Output::parse_history_nodes(const std::string &text)
     {
       const std::string        path = "Output/History nodes";
       std::vector<HistoryNode> nodes;
-      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+      for (const auto &[name, point] :
+           named_entries(text, path, "name: x, y, z"))
         {
-          const std::size_t colon = entry.find(':');
-          if (colon == std::string::npos)
-            throw InputError(path,
-                             "the entry '" + entry +
-                               "' is not of the form 'name: x, y, z'");
           HistoryNode node;
-          node.name = Utilities::trim(entry.substr(0, colon));
-          if (node.name.empty() ||
-              node.name.find_first_not_of(
-                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                "0123456789_") != std::string::npos)
-            throw InputError(path,
-                             "the name '" + node.name + "' of the entry '" +
-                               entry +
-                               "' must be letters, digits and '_' only");
-          for (const HistoryNode &other : nodes)
-            if (other.name == node.name)
-              throw InputError(path,
-                               "the name '" + node.name + "' is given twice");
+          node.name = name;
           const std::vector<std::string> coordinates =
-            Utilities::split_string_list(entry.substr(colon + 1), ',');
+            Utilities::split_string_list(point, ',');
           if (coordinates.size() != 3)
             throw InputError(path,
                              "the point of '" + node.name +
                                "' needs three coordinates x, y, z (mm), not '" +
-                               Utilities::trim(entry.substr(colon + 1)) + "'");
+                               point + "'");
           for (unsigned int d = 0; d < 3; ++d)
             {
               try
@@ -170,31 +200,11 @@ namespace rubberdyn
     Output::parse_history_expressions(const std::string &text)
     {
       const std::string path = "Output/History expressions";
-      std::vector<std::pair<std::string, std::string>> expressions;
-      for (const std::string &entry : Utilities::split_string_list(text, ';'))
-        {
-          const std::size_t colon = entry.find(':');
-          if (colon == std::string::npos)
-            throw InputError(path,
-                             "the entry '" + entry +
-                               "' is not of the form 'name: expression'");
-          const std::string name = Utilities::trim(entry.substr(0, colon));
-          const std::string expression =
-            Utilities::trim(entry.substr(colon + 1));
-          if (name.empty() ||
-              name.find_first_not_of(
-                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                "0123456789_") != std::string::npos)
-            throw InputError(path,
-                             "the name '" + name + "' of the entry '" + entry +
-                               "' must be letters, digits and '_' only");
-          for (const auto &other : expressions)
-            if (other.first == name)
-              throw InputError(path, "the name '" + name + "' is given twice");
-          if (expression.empty())
-            throw InputError(path, "the expression of '" + name + "' is empty");
-          expressions.emplace_back(name, expression);
-        }
+      const std::vector<std::pair<std::string, std::string>> expressions =
+        named_entries(text, path, "name: expression");
+      for (const auto &[name, expression] : expressions)
+        if (expression.empty())
+          throw InputError(path, "the expression of '" + name + "' is empty");
       return expressions;
     }
 

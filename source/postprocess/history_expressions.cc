@@ -20,7 +20,7 @@ namespace rubberdyn
        * The row's values followed by the expressions' (the variables'
        * storage: muparser keeps pointers into it, so it is sized once).
        */
-      mutable std::vector<double> variables;
+      std::vector<double>         variables;
       std::size_t                 n_columns = 0;
       std::vector<mu::Parser>     parsers;
     };

@@ -211,6 +211,26 @@ namespace rubberdyn
       };
 
       /**
+       * Declare `Part`, `Point` and `Normal` of a section (pretension or
+       * cross section) in the current subsection, what parse_part_plane()
+       * reads; @p part_doc and @p normal_doc say what they mean for it.
+       */
+      void
+      declare_part_plane(ParameterHandler  &prm,
+                         const std::string &part_doc,
+                         const std::string &normal_doc)
+      {
+        prm.declare_entry("Part", "", Patterns::Anything(), part_doc);
+        prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
+                          "A point of the plane (mm). Put the plane inside "
+                          "a layer of elements, not on their faces.");
+        prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
+                          normal_doc);
+      }
+
+
+
+      /**
        * `Part`, `Point` and `Normal` of the section at @p path (the current
        * subsection of @p prm), for pretension and cross sections alike.
        *
@@ -279,18 +299,13 @@ namespace rubberdyn
              names_with_template(names, "Pretension sections"))
           {
             prm.enter_subsection(name);
-            prm.declare_entry("Part", "", Patterns::Anything(),
-                              "The deformable part the plane cuts (F-bar or "
-                              "displacement element); the cut elements must "
-                              "form one layer across the shank, clear of "
-                              "other parts.");
-            prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
-                              "A point of the section plane (mm). Put the "
-                              "plane inside a layer of elements, not on "
-                              "their faces.");
-            prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
-                              "Normal of the plane, the bolt's axis (either "
-                              "sense; need not be a unit vector).");
+            declare_part_plane(prm,
+                               "The deformable part the plane cuts (F-bar or "
+                               "displacement element); the cut elements must "
+                               "form one layer across the shank, clear of "
+                               "other parts.",
+                               "Normal of the plane, the bolt's axis (either "
+                               "sense; need not be a unit vector).");
             prm.declare_entry("Control", "force",
                               Patterns::Selection("force|shortening"),
                               "'force': the force through the section "
@@ -406,22 +421,17 @@ namespace rubberdyn
              names_with_template(names, "Cross sections"))
           {
             prm.enter_subsection(name);
-            prm.declare_entry("Part", "", Patterns::Anything(),
-                              "The deformable part the plane cuts (F-bar or "
-                              "displacement element): the resultant is that "
-                              "of the part's own elements that the plane "
-                              "cuts, whatever else is attached to them.");
-            prm.declare_entry("Point", "0, 0, 0", Patterns::Anything(),
-                              "A point of the plane (mm). Put the plane "
-                              "inside a layer of elements, not on their "
-                              "faces.");
-            prm.declare_entry("Normal", "0, 0, 1", Patterns::Anything(),
-                              "Normal of the plane (need not be a unit "
-                              "vector): the resultant is that of the "
-                              "traction sigma n on the plane, the force "
-                              "the material on the Normal's side exerts on "
-                              "the other side (tension along the Normal "
-                              "positive).");
+            declare_part_plane(prm,
+                               "The deformable part the plane cuts (F-bar or "
+                               "displacement element): the resultant is that "
+                               "of the part's own elements that the plane "
+                               "cuts, whatever else is attached to them.",
+                               "Normal of the plane (need not be a unit "
+                               "vector): the resultant is that of the "
+                               "traction sigma n on the plane, the force "
+                               "the material on the Normal's side exerts on "
+                               "the other side (tension along the Normal "
+                               "positive).");
             prm.leave_subsection();
           }
         prm.leave_subsection();
