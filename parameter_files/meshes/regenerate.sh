@@ -69,3 +69,9 @@ for geo in *.geo; do
     mesh "$geo" "$name.msh"
   fi
 done
+
+# The study's test 1 has a 4 mm plate (tests 2 to 4 the default 5 mm):
+# parameter_files/bushing_test_1.prm and its coarse variant in the tests.
+mesh bushing.geo bushing_plate4.msh -setnumber plate_thickness 4
+mesh bushing.geo bushing_1_plate4.msh -setnumber n 1 \
+  -setnumber plate_thickness 4

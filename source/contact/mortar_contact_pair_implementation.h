@@ -113,6 +113,12 @@ namespace rubberdyn
     /** Everything behind the interface (the class documentation). */
     struct MortarContactPair::Implementation
     {
+      /**
+       * The largest weighted gap that counts as closed in the tangent (mm):
+       * faces that touch in the mesh have gaps of the integrals' round-off.
+       */
+      static constexpr double closed_gap = 1e-12;
+
       /** One direction of the pair: a slave and a master surface. */
       struct Pass
       {

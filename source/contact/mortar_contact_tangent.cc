@@ -217,9 +217,17 @@ namespace rubberdyn
             return y[at(node)];
           };
           const Vector n = nodal_normal<Number>(pass, k, position);
-          const Number g = -(n * gap) / A;
-          if (!(value_of(g) < 0.))
+          Number g = -(n * gap) / A;
+          // A closed gap (g = 0, to the round-off of the integrals) is
+          // active: its derivative is the closed side's, so that a body
+          // held only by faces that touch in the mesh has stiffness; its
+          // force, p = 0, is the same. (A gap within the round-off is
+          // taken as 0 itself: its p < 0 would make friction's cone
+          // negative.)
+          if (!(value_of(g) <= closed_gap))
             return false;
+          if (value_of(g) > 0.)
+            g -= value_of(g);
           const Number p = -pass.penalty * g;
           traction       = Number(-p) * n;
           if (coulomb)
