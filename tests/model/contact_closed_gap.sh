@@ -37,13 +37,7 @@ end
 subsection Parts
   set Names = rubber, plate
 $(study_rubber_part)
-  subsection plate
-    set Material ids    = 2
-    set Model           = Elastic
-    set Young's modulus = 210
-    set Poisson's ratio = 0.3
-    set Density         = 7.85e-6
-  end
+$(elastic_steel_part plate 2)
 end
 subsection Boundary conditions
   set Names = ground, press
@@ -58,16 +52,7 @@ subsection Boundary conditions
     set Function expression = -2e-4 * t
   end
 end
-subsection Contact pairs
-  set Names = interface
-  subsection interface
-    set Slave boundary ids           = 1
-    set Master boundary ids          = 2
-    set Type                         = Coulomb
-    set Static friction coefficient  = 0.8
-    set Dynamic friction coefficient = 0.8
-  end
-end
+$(coulomb_pair interface 1 2 0.8)
 subsection Time integration
   set Scheme                = quasi-static
   set Quasi-static end time = 1

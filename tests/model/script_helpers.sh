@@ -55,6 +55,37 @@ end
 PRM
 }
 
+# elastic_steel_part NAME MATERIAL_ID: a Parts subsection of elastic steel
+# (E 210 GPa, nu 0.3, 7.85e-6 kg/mm^3).
+elastic_steel_part() {
+  cat <<PRM
+  subsection $1
+    set Material ids    = $2
+    set Model           = Elastic
+    set Young's modulus = 210
+    set Poisson's ratio = 0.3
+    set Density         = 7.85e-6
+  end
+PRM
+}
+
+# coulomb_pair NAME SLAVE_IDS MASTER_IDS MU: the Contact pairs section with
+# the one Coulomb pair NAME (static and dynamic friction coefficient MU).
+coulomb_pair() {
+  cat <<PRM
+subsection Contact pairs
+  set Names = $1
+  subsection $1
+    set Slave boundary ids           = $2
+    set Master boundary ids          = $3
+    set Type                         = Coulomb
+    set Static friction coefficient  = $4
+    set Dynamic friction coefficient = $4
+  end
+end
+PRM
+}
+
 # bonded_block_parts MOTION: the Parts subsection of meshes/bonded_block.msh
 # with the study's rubber (material id 1) and the steel plate (id 2) as a
 # rigid part in equilibrium on the load path, free in MOTION (Rigid motion).
