@@ -7,51 +7,43 @@
 # (run_summary.json), the contact share, and the wall time that 40 ms
 # would take at the same cost per step.
 #
-# Usage: bushing.sh EXECUTABLE SOURCE_DIR [NPROC [MESH [IMPACT [STEPS]]]]
+# Usage: bushing.sh EXECUTABLE SOURCE_DIR [NPROC [MESH_N [IMPACT [STEPS]]]]
 #   NPROC   MPI ranks (default 2)
-#   MESH    bushing (the default n = 2, 27 104 cells) or bushing_1 (n = 1)
+#   MESH_N  mesh density n: 2 (meshes/bushing.msh, 27 104 cells; default) or
+#           1 (meshes/bushing_1.msh, 6874 cells)
 #   IMPACT  ms of the explicit run (default 0.5)
 #   STEPS   load steps of the preload: 4 (the shipped quarter steps) or 1
 #           (the whole pseudo-time at once, as the shortened ctests;
 #           default 1)
-# Runs in the working directory (bushing_bench_*).
+# Runs in the working directory (bushing_bench_*); the parameter files are
+# written by tests/model/bushing_short_common.sh's bushing_variant.
 set -euo pipefail
-exe=$1; source_dir=$2; nproc=${3:-2}; mesh=${4:-bushing}; impact=${5:-0.5}
+exe=$1; source_dir=$2; nproc=${3:-2}; mesh_n=${4:-2}; impact=${5:-0.5}
 steps=${6:-1}
 step_size=$(awk -v s="$steps" 'BEGIN { print 1 / s }')
+source "$source_dir/tests/model/bushing_short_common.sh"
 
-# prm N END: bushing_test_N.prm on MESH, END ms, outputs bushing_bench_N.
-prm() {
-  sed -e "s|set Mesh file *= *meshes/bushing\.msh|set Mesh file = $source_dir/parameter_files/meshes/$mesh.msh|" \
-      -e "s|set End time  *= 40|set End time = $2|" \
-      -e "s|set Output directory  *= output/bushing_test_$1|set Output directory = bushing_bench_$1|" \
-      -e "s|set Initial step  *= 0.25|set Initial step = $step_size|" \
-      -e "s|set Maximum step  *= 0.25|set Maximum step = $step_size\n    set Maximum iterations = 25|" \
-      -e "s|set Field output interval   = 1|set Field output interval = 1000|" \
-      "$source_dir/parameter_files/bushing_test_$1.prm" > "bushing_bench_$1.prm"
-}
 run() { # NAME
   /usr/bin/time -f "%e s wall, %M kB peak memory (rank 0)" \
     mpirun --oversubscribe -np "$nproc" "$exe" "bushing_bench_$1.prm" \
     > "bushing_bench_$1.log" 2> "bushing_bench_$1.time"
 }
 
-prm 2 0.001
+bushing_variant 2 "$mesh_n" 0.001 "$step_size" bushing_bench_2
 rm -rf bushing_bench_2 bushing_bench_4
 run 2
-echo "preload ($mesh, $nproc ranks, $steps load steps): $(grep '^Finished: .*load steps' bushing_bench_2.log)"
+echo "preload (n = $mesh_n, $nproc ranks, $steps load steps): $(grep '^Finished: .*load steps' bushing_bench_2.log)"
 echo "  $(tail -1 bushing_bench_2.time)"
 
-prm 4 "$impact"
+bushing_variant 4 "$mesh_n" "$impact" "$step_size" bushing_bench_4
 mkdir -p bushing_bench_4/preload
 cp -r bushing_bench_2/preload/checkpoint bushing_bench_4/preload/
 run 4
 echo "impact (test 4, $impact ms): $(grep '^Finished:' bushing_bench_4.log)"
 echo "  $(tail -1 bushing_bench_4.time)"
-/usr/bin/python3 - "$impact" bushing_bench_4/run_summary.json <<'PY'
+/usr/bin/python3 - bushing_bench_4/run_summary.json <<'PY'
 import json, sys
-impact = float(sys.argv[1])
-s = json.load(open(sys.argv[2]))
+s = json.load(open(sys.argv[1]))
 b = s["ns_per_element_cycle_breakdown"]
 ns = s["ns_per_element_cycle"]
 print(f"  {s['cells']} cells, {s['dofs']} dofs, {s['ranks']} ranks, {s['time_steps']} steps to {s['end_time']:.4g} ms, {s['wall_seconds']:.1f} s")

@@ -1,6 +1,7 @@
 # Sourced by tests/model/bushing_short_plate5.sh and bushing_short_plate4.sh
 # (they set exe, source_dir, nproc): the shortened drop-tower tests of
-# parameter_files/bushing_test_N.prm (issue 10, doc/bushing.md).
+# parameter_files/bushing_test_N.prm (issue 10, doc/bushing.md); and by
+# benchmarks/bushing.sh for bushing_variant.
 #
 # The shortened version of a test: the shipped file on the coarse mesh
 # (meshes/bushing_1.msh or bushing_1_plate4.msh, n = 1: 6874 cells), the
@@ -8,29 +9,37 @@
 # the shipped four quarter steps take 32 in all), 0.1 ms of impact, a
 # history row every 0.002 ms.
 
-# short_prm N: the shortened parameter file of test N, as bushing_test_N.prm.
-short_prm() {
-  sed -e "s|set Mesh file *= *meshes/bushing\(.*\)\.msh|set Mesh file = $source_dir/parameter_files/meshes/bushing_1\1.msh|" \
-      -e "s|set End time  *= 40|set End time = 0.1|" \
-      -e "s|set History output interval = .*|set History output interval = 0.002|" \
-      -e "s|set Output directory  *= output/|set Output directory = |" \
-      -e "s|set Initial step  *= 0.25|set Initial step = 1|" \
-      -e "s|set Maximum step  *= 0.25|set Maximum step = 1\n    set Maximum iterations = 25|" \
-      "$source_dir/parameter_files/bushing_test_$1.prm" > "bushing_test_$1.prm"
-  # (Every substitution must have been made.)
+# bushing_variant N MESH_N END STEP DIRECTORY [HISTORY_INTERVAL]: writes
+# DIRECTORY.prm, parameter_files/bushing_test_N.prm ($source_dir set) on
+# the mesh of density MESH_N (1: meshes/bushing_1*.msh; 2: the shipped
+# meshes/bushing*.msh), END ms of impact, load steps of STEP (at most 25
+# Newton iterations each), its outputs in DIRECTORY and, if given, a
+# history row every HISTORY_INTERVAL ms. Every substitution must take.
+bushing_variant() {
+  local test=$1 mesh_n=$2 end=$3 step=$4 directory=$5 interval=${6:-}
+  local suffix=""
+  [ "$mesh_n" = 1 ] && suffix="_1"
+  sed -e "s|set Mesh file *= *meshes/bushing\(.*\)\.msh|set Mesh file = $source_dir/parameter_files/meshes/bushing$suffix\1.msh|" \
+      -e "s|set End time  *= 40|set End time = $end|" \
+      ${interval:+-e "s|set History output interval = .*|set History output interval = $interval|"} \
+      -e "s|set Output directory  *= output/bushing_test_$test|set Output directory = $directory|" \
+      -e "s|set Initial step  *= 0.25|set Initial step = $step|" \
+      -e "s|set Maximum step  *= 0.25|set Maximum step = $step\n    set Maximum iterations = 25|" \
+      "$source_dir/parameter_files/bushing_test_$test.prm" > "$directory.prm"
   local expected
-  for expected in "bushing_1" "End time = 0.1" "interval = 0.002" \
-                  "directory = bushing_test_$1" "Initial step = 1" \
-                  "Maximum iterations = 25"; do
-    grep -q "$expected" "bushing_test_$1.prm" ||
-      { echo "bushing_test_$1.prm: no '$expected'"; exit 1; }
+  for expected in "parameter_files/meshes/bushing$suffix" "End time = $end" \
+                  "directory = $directory" "Initial step = $step" \
+                  "Maximum iterations = 25" \
+                  ${interval:+"interval = $interval"}; do
+    grep -q "$expected" "$directory.prm" ||
+      { echo "$directory.prm: no '$expected'"; exit 1; }
   done
 }
 
 # run_short N: the shortened test N, its log in bushing_test_N.log.
 run_short() {
   rm -rf "bushing_test_$1"
-  short_prm "$1"
+  bushing_variant "$1" 1 0.1 1 "bushing_test_$1" 0.002
   if [ "$1" = 3 ] || [ "$1" = 4 ]; then
     # Test 2's preload (the shipped files restart from it).
     mkdir -p "bushing_test_$1/preload"
@@ -59,11 +68,11 @@ check_short() {
     { echo "test $1: added mass (or no mass line) in the log"; exit 1; }
   awk -F, -v test="$1" -v v0="$2" '
     function abs(x) { return x < 0 ? -x : x }
+    BEGIN { n = split("bolt nut washer inner_sleeve rubber plastic_sleeve metal_sleeve plate brace", parts, " ") }
     NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     { t = $c["time"]
       if (NR == 2) preload = $c["bolt_section_force"]
       ke = 0; ie = 0
-      n = split("bolt nut washer inner_sleeve rubber plastic_sleeve metal_sleeve plate brace", parts, " ")
       for (k = 1; k <= n; ++k) {
         ke += $c[parts[k] "_kinetic_energy"]; ie += $c[parts[k] "_internal_energy"]
       }

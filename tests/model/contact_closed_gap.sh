@@ -11,9 +11,9 @@
 # In the first load step every gap is 0: the pair's tangent takes a closed
 # gap as active (normal stiffness and friction's sticking stiffness; the
 # force there, p = 0, is the same either way). Without that the first
-# system is singular in the block's rigid motions (and a gap of +1e-13 mm,
-# the integrals' round-off, made friction's cone negative and the tangent
-# NaN): measured before the change, 3 cut-backs (15 iterations each) and
+# system is singular in the block's rigid motions (and a gap of a
+# round-off above 0, as the integrals give some nodes of touching faces,
+# made friction's cone negative and the tangent NaN): measured before the change, 3 cut-backs (15 iterations each) and
 # 94 Newton iterations; after it, 0 cut-backs and 4 to 7 iterations a step.
 # Checked (1 and 2 ranks):
 #  - no cut-back, at most 8 Newton iterations in every load step;
