@@ -36,7 +36,8 @@ from paraview.simple import (ColorBy, Delete, GetActiveCamera,
 EXPECTED = ["displacement", "velocity",
             "cauchy_stress_xx", "cauchy_stress_yy", "cauchy_stress_zz",
             "cauchy_stress_xy", "cauchy_stress_xz", "cauchy_stress_yz",
-            "von_mises_stress", "pressure", "J", "mpi_rank"]
+            "von_mises_stress", "pressure", "J", "equivalent_plastic_strain",
+            "mpi_rank"]
 
 
 def time_steps(reader):

@@ -450,8 +450,60 @@ namespace rubberdyn
 
 
     void
+    MortarContactPair::Implementation::mark_open_nodes(const Pass &pass)
+    {
+      open_node.assign(x.size(), 0);
+      // Per gap facet: clearly open towards each of its candidates, by
+      // 1e-9 of its diagonal (far above the heights' round-off).
+      std::vector<char> separated(pass.gap_facets.size(), 0);
+      FacetCorners      master_corners;
+      for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
+        {
+          const auto             &s = facet_nodes[pass.gap_facets[i]];
+          const MortarSlaveFacet &slave_facet = slave_facets[i];
+          const double clearance = 1e-9 * (x[s[2]] - x[s[0]]).norm();
+          bool         open      = true;
+          for (const unsigned int m : pass.candidates[i])
+            {
+              const auto &mc = facet_nodes[m];
+              for (unsigned int k = 0; k < 4; ++k)
+                master_corners[k] = x[mc[k]];
+              if (!slave_facet.clearly_open(master_corners, clearance))
+                {
+                  open = false;
+                  break;
+                }
+            }
+          separated[i] = open;
+        }
+      // A node is open if all its gap facets are, and its normal points
+      // their normals' way (so that a positive multiple of a facet's
+      // normal gives a positive gap at the node).
+      for (unsigned int k = 0; k < pass.nodes.size(); ++k)
+        {
+          const unsigned int node = pass.nodes[k];
+          bool               open = true;
+          for (unsigned int j = pass.gap_start[k];
+               j < pass.gap_start[k + 1] && open;
+               ++j)
+            {
+              const unsigned int i = pass.node_gap_facets[j];
+              const auto        &s = facet_nodes[pass.gap_facets[i]];
+              open = separated[i] &&
+                     normal[node] * cross_product_3d(x[s[2]] - x[s[0]],
+                                                     x[s[3]] - x[s[1]]) >
+                       0.;
+            }
+          open_node[node] = open;
+        }
+    }
+
+
+
+    bool
     MortarContactPair::Implementation::integrate(Pass      &pass,
-                                                 const bool keep_all)
+                                                 const bool keep_all,
+                                                 const bool skip_open)
     {
       for (const unsigned int node : pass.nodes)
         {
@@ -461,16 +513,34 @@ namespace rubberdyn
             slip[node] = Tensor<1, 3>();
         }
       pass.segments.clear();
-      FacetCorners  slave_corners, master_corners;
+      // Each gap facet's plane and projected corners once for all its
+      // candidates.
+      FacetCorners slave_corners, master_corners;
+      slave_facets.clear();
+      for (const unsigned int f : pass.gap_facets)
+        {
+          const auto &s = facet_nodes[f];
+          for (unsigned int a = 0; a < 4; ++a)
+            slave_corners[a] = x[s[a]];
+          slave_facets.emplace_back(slave_corners);
+        }
+      if (skip_open)
+        mark_open_nodes(pass);
+      bool          skipped = false;
       MortarSegment segment;
       Tensor<1, 3>  weighted[4];
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
           const auto &s = facet_nodes[pass.gap_facets[i]];
+          if (skip_open && open_node[s[0]] && open_node[s[1]] &&
+              open_node[s[2]] && open_node[s[3]])
+            {
+              skipped = true;
+              continue;
+            }
           for (unsigned int a = 0; a < 4; ++a)
             slave_corners[a] = x[s[a]];
-          // Its plane and projected corners once for all its candidates.
-          const MortarSlaveFacet slave_facet(slave_corners);
+          const MortarSlaveFacet &slave_facet = slave_facets[i];
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
@@ -498,6 +568,29 @@ namespace rubberdyn
                 pass.segments.push_back({i, m, segment});
             }
         }
+      return skipped;
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::refresh_shown_gaps(Pass &pass)
+    {
+      // The evaluation's sums and segments stay as they were. (The other
+      // nodes' gaps come out as add_forces() gave them, to the bit.)
+      const std::vector<double>        area_kept     = area;
+      const std::vector<Tensor<1, 3>>  gap_kept      = gap;
+      const std::vector<Tensor<1, 3>>  slip_kept     = slip;
+      const std::vector<StoredSegment> segments_kept = pass.segments;
+      compute_normals(pass);
+      integrate(pass, false, false);
+      for (const unsigned int node : pass.nodes)
+        pass.shown_gap[node] =
+          area[node] > 0. ? -(normal[node] * gap[node]) / area[node] : 0.;
+      area          = area_kept;
+      gap           = gap_kept;
+      slip          = slip_kept;
+      pass.segments = segments_kept;
     }
 
 
@@ -613,8 +706,9 @@ namespace rubberdyn
       if (!tied)
         I.search_if_needed();
 
-      statistics         = ContactPairStatistics();
-      double energy      = 0.;
+      statistics           = ContactPairStatistics();
+      I.shown_gaps_partial = false;
+      double energy        = 0.;
       double dissipation = 0.;
       // An active node's share of the columns: pressure p, tangential
       // traction t (GPa) on its covered area A (mm^2).
@@ -680,8 +774,8 @@ namespace rubberdyn
             }
           else
             {
-              I.integrate(pass, false);
               I.compute_normals(pass);
+              I.shown_gaps_partial |= I.integrate(pass, false, true);
               const model::ContactPairDefinition &def = I.definition;
               const double step = point.time - I.time_accepted;
               const bool   book = pass.accepted_penalty >= 0.;
@@ -873,7 +967,15 @@ namespace rubberdyn
     void
     MortarContactPair::add_surface_fields(VectorType &fields) const
     {
-      const Implementation &I = *impl;
+      Implementation &I = *impl;
+      // The gaps of the nodes that the evaluation left out as clearly
+      // open, for the picture only.
+      if (I.shown_gaps_partial)
+        {
+          for (Implementation::Pass &pass : I.passes)
+            I.refresh_shown_gaps(pass);
+          I.shown_gaps_partial = false;
+        }
       VectorType            values(I.partitioner);
       for (const Implementation::Pass &pass : I.passes)
         for (const unsigned int node : pass.nodes)

@@ -185,9 +185,41 @@ namespace rubberdyn
       void
       search_if_needed();
 
-      /** Integrate the segments of @p pass at the current positions. */
+      /**
+       * Integrate the segments of @p pass at the current positions. With
+       * @p skip_open, the gap facets whose four nodes are all clearly open
+       * (mark_open_nodes()) are left out: those nodes carry no traction
+       * whatever their other facets give (their weighted gaps are sums of
+       * positive terms), so the forces, and every sum at the other nodes,
+       * are those of the full integration to the bit; only the open
+       * nodes' areas and gaps are partial (refresh_shown_gaps() makes the
+       * shown gaps whole again). The nodal normals must be current
+       * (compute_normals()).
+       *
+       * @return Whether a facet was left out.
+       */
+      bool
+      integrate(Pass &pass, const bool keep_all, const bool skip_open = false);
+
+      /**
+       * Mark in open_node (by node index) the nodes of @p pass that are
+       * clearly open: every gap facet around the node is clearly open
+       * towards each of its candidates (MortarSlaveFacet::clearly_open()
+       * with a clearance of 1e-9 of the facet's diagonal), and the nodal
+       * normal points the facet normals' way. Each segment then adds a
+       * positive multiple of its facet's normal to the node's weighted gap
+       * vector: its gap is positive and it carries no traction. Needs
+       * slave_facets of the current positions.
+       */
       void
-      integrate(Pass &pass, const bool keep_all);
+      mark_open_nodes(const Pass &pass);
+
+      /** The shown gaps (ParaView) of the nodes that the last skipping
+       * integrate() left partial: integrates @p pass in full again, at the
+       * positions of the last evaluation, and restores the evaluation's
+       * sums and segments. */
+      void
+      refresh_shown_gaps(Pass &pass);
 
       /** The nodal normals of @p pass's nodes at the current positions. */
       void
@@ -391,6 +423,17 @@ namespace rubberdyn
       /** Energy in the pair's springs at the last evaluation (J). */
       double             energy = 0.;
       ContactPairTimings timings;
+
+      /** By node index: open (mark_open_nodes()). */
+      std::vector<char> open_node;
+
+      /** Scratch of integrate(): the gap facets prepared for their
+       * segments (capacity kept between evaluations). */
+      std::vector<MortarSlaveFacet> slave_facets;
+
+      /** Whether the last evaluation left facets out (integrate()), so
+       * that the shown gaps of open nodes need refresh_shown_gaps(). */
+      bool shown_gaps_partial = false;
     };
   } // namespace contact
 } // namespace rubberdyn

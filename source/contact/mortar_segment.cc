@@ -298,6 +298,7 @@ namespace rubberdyn
       normal      = cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
       normal_norm = normal.norm();
       degenerate  = !(value_of(normal_norm) > 0.);
+      top         = 0.;
       if (degenerate)
         return;
       normal /= normal_norm;
@@ -326,15 +327,18 @@ namespace rubberdyn
           lower[1] = std::min(lower[1], value_of(x.y));
           upper[1] = std::max(upper[1], value_of(x.y));
         }
+      top = -std::numeric_limits<double>::max();
+      for (const Point<3, Number> &x : slave)
+        top = std::max(top, value_of((x - centre) * normal));
     }
 
 
 
     template <typename Number>
     bool
-    MortarSlaveFacetOf<Number>::integrate(const FacetCornersOf<Number> &master,
-                                          MortarSegmentOf<Number>      &segment,
-                                          const unsigned int row) const
+    MortarSlaveFacetOf<Number>::may_overlap(
+      const FacetCornersOf<Number> &master,
+      PlanePoint<Number> (&master_corner)[4]) const
     {
       if (degenerate)
         return false;
@@ -343,7 +347,6 @@ namespace rubberdyn
       if (!(value_of(master_normal * normal) < 0.))
         return false;
 
-      PlanePoint<Number> master_corner[4];
       for (unsigned int k = 0; k < 4; ++k)
         {
           const Tensor<1, 3, Number> r = master[k] - centre;
@@ -374,6 +377,37 @@ namespace rubberdyn
               master_lower[d] > upper[d] + margin)
             return false;
         }
+      return true;
+    }
+
+
+
+    template <typename Number>
+    bool
+    MortarSlaveFacetOf<Number>::clearly_open(
+      const FacetCornersOf<Number> &master,
+      const double                  clearance) const
+    {
+      PlanePoint<Number> master_corner[4];
+      if (!may_overlap(master, master_corner))
+        return true;
+      for (const Point<3, Number> &x : master)
+        if (!(value_of((x - centre) * normal) > top + clearance))
+          return false;
+      return true;
+    }
+
+
+
+    template <typename Number>
+    bool
+    MortarSlaveFacetOf<Number>::integrate(const FacetCornersOf<Number> &master,
+                                          MortarSegmentOf<Number>      &segment,
+                                          const unsigned int row) const
+    {
+      PlanePoint<Number> master_corner[4];
+      if (!may_overlap(master, master_corner))
+        return false;
 
       // The slave quadrilateral clipped by each edge of the master one,
       // which runs clockwise in the slave's plane (it faces the other way).

@@ -432,7 +432,8 @@ namespace rubberdyn
                                          block.inverse_jacobian_centre,
                                          F0);
           lanes_of::determinant_and_inverse_transpose(F0, J0, G);
-          double mises[lanes] = {}, p[lanes] = {}, J_mean[lanes] = {};
+          double mises[lanes] = {}, p[lanes] = {}, J_mean[lanes] = {},
+                 alpha[lanes] = {};
           double cauchy[6][lanes] = {};
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -473,6 +474,11 @@ namespace rubberdyn
                   mises[l] += std::sqrt(1.5) * deviator(sigma).norm() / n_q;
                   p[l] -= trace(sigma) / 3. / n_q;
                   J_mean[l] += J[l] / n_q;
+                  // The history of the state at u (the accepted one when
+                  // u is the accepted displacement).
+                  alpha[l] +=
+                    law.equivalent_plastic_strain(make_array_view(scratch)) /
+                    n_q;
                 }
             }
           for (unsigned int l = 0; l < block.n_active; ++l)
@@ -484,6 +490,7 @@ namespace rubberdyn
               averages.von_mises[cell] = mises[l];
               averages.pressure[cell]  = p[l];
               averages.jacobian[cell]  = J_mean[l];
+              averages.equivalent_plastic_strain[cell] = alpha[l];
             }
         }
       return averages;

@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/materials/elastic.h>
+#include <rubberdyn/materials/finite_strain_j2_stress_kernel.h>
 #include <rubberdyn/materials/material_registry.h>
 
 #include <cmath>
@@ -125,6 +126,13 @@ namespace rubberdyn
                                compute_tangent,
                                response_3d);
       internal::restrict_from_3d(response_3d, compute_tangent, response);
+    }
+
+    template <int dim>
+    std::unique_ptr<StressKernel>
+    Elastic<dim>::create_stress_kernel() const
+    {
+      return std::make_unique<FiniteStrainJ2StressKernel>(moduli, nullptr);
     }
 
     template class Elastic<2>;

@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/materials/j2_plasticity.h>
+#include <rubberdyn/materials/finite_strain_j2_stress_kernel.h>
 #include <rubberdyn/materials/material_registry.h>
 
 #include <cmath>
@@ -99,6 +100,17 @@ namespace rubberdyn
 
     template <int dim>
     double
+    J2Plasticity<dim>::equivalent_plastic_strain(
+      const ArrayView<const double> &state) const
+    {
+      AssertDimension(state.size(), finite_strain_j2::n_state_variables);
+      return state[finite_strain_j2::equivalent_plastic_strain_index];
+    }
+
+
+
+    template <int dim>
+    double
     J2Plasticity<dim>::shear_modulus() const
     {
       return moduli.shear_modulus;
@@ -184,6 +196,13 @@ namespace rubberdyn
                                compute_tangent,
                                response_3d);
       internal::restrict_from_3d(response_3d, compute_tangent, response);
+    }
+
+    template <int dim>
+    std::unique_ptr<StressKernel>
+    J2Plasticity<dim>::create_stress_kernel() const
+    {
+      return std::make_unique<FiniteStrainJ2StressKernel>(moduli, &hardening);
     }
 
     template class J2Plasticity<2>;

@@ -23,6 +23,16 @@ namespace rubberdyn
 
 
     template <int dim>
+    double
+    MaterialModel<dim>::equivalent_plastic_strain(
+      const ArrayView<const double> &) const
+    {
+      return 0.;
+    }
+
+
+
+    template <int dim>
     std::unique_ptr<StressKernel>
     MaterialModel<dim>::create_stress_kernel() const
     {

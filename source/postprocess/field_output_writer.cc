@@ -113,6 +113,8 @@ namespace rubberdyn
       cell_data.emplace_back("von_mises_stress", averages.von_mises);
       cell_data.emplace_back("pressure", averages.pressure);
       cell_data.emplace_back("J", averages.jacobian);
+      cell_data.emplace_back("equivalent_plastic_strain",
+                             averages.equivalent_plastic_strain);
       std::vector<float> part_id(n_active, 0.f), material_id(n_active, 0.f);
       for (const auto &cell : model.triangulation.active_cell_iterators())
         if (cell->is_locally_owned())

@@ -129,7 +129,33 @@ namespace rubberdyn
                 MortarSegmentOf<Number>      &segment,
                 const unsigned int            row = 4) const;
 
+      /**
+       * Whether @p master adds nothing but open gap to this facet's nodes:
+       * integrate() would find no segment with it (it faces the same way,
+       * or it is apart in the plane: the same cheap tests), or its lowest
+       * corner along the normal lies above this facet's highest corner by
+       * more than @p clearance (mm). Bilinear facets lie between their
+       * corners' heights and the segment's points are matched along the
+       * normal, so every matched master point then lies above its slave
+       * point: the segment adds a positive multiple of the normal to the
+       * weighted gap vectors.
+       */
+      bool
+      clearly_open(const FacetCornersOf<Number> &master,
+                   const double                  clearance) const;
+
     private:
+      /**
+       * The cheap tests of integrate(): whether @p master faces this facet
+       * and its corners in the plane (@p master_corner, written) have a
+       * bounding box that meets this facet's.
+       */
+      bool
+      may_overlap(const FacetCornersOf<Number>               &master,
+                  mortar_segment_internal::PlanePoint<Number> (&master_corner)[4])
+        const;
+
+
       /** True for a facet without area (no segment then). */
       bool degenerate;
       /** The auxiliary plane: centre, unit normal and in-plane axes. */
@@ -140,6 +166,8 @@ namespace rubberdyn
       mortar_segment_internal::BilinearMap<Number> map;
       /** Its bounding box in the plane (values). */
       double lower[2], upper[2];
+      /** The highest corner's height above the plane (value, mm). */
+      double top;
     };
 
     /** The slave facet prepared in double precision. */

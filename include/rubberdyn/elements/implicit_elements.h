@@ -20,6 +20,7 @@ namespace rubberdyn
         : von_mises(n_active_cells, 0.f)
         , pressure(n_active_cells, 0.f)
         , jacobian(n_active_cells, 0.f)
+        , equivalent_plastic_strain(n_active_cells, 0.f)
       {
         for (std::vector<float> &component : cauchy_stress)
           component.assign(n_active_cells, 0.f);
@@ -33,6 +34,8 @@ namespace rubberdyn
       std::vector<float> pressure;
       /** Jacobian determinant J. */
       std::vector<float> jacobian;
+      /** Equivalent plastic strain (-; 0 for laws without plasticity). */
+      std::vector<float> equivalent_plastic_strain;
     };
 
     /**
@@ -63,8 +66,8 @@ namespace rubberdyn
       n_groups() const = 0;
 
       /**
-       * Cell averages of the Cauchy stress, von Mises stress, pressure and
-       * J at displacement @p u, one value per active cell in the order of
+       * Cell averages of the Cauchy stress, von Mises stress, pressure, J
+       * and the equivalent plastic strain at displacement @p u, one value per active cell in the order of
        * the triangulation's active cell iterator (locally owned cells
        * filled, the others zero): the ParaView fields.
        */

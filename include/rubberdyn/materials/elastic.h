@@ -60,6 +60,10 @@ namespace rubberdyn
       void
       print_constants(std::ostream &out) const override;
 
+      /** A FiniteStrainJ2StressKernel with this law's constants. */
+      std::unique_ptr<StressKernel>
+      create_stress_kernel() const override;
+
     private:
       finite_strain_j2::ElasticModuli moduli;
     };

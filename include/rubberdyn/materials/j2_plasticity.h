@@ -44,6 +44,11 @@ namespace rubberdyn
       void
       initialize_state(const ArrayView<double> &state) const override;
 
+      /** The history's $\alpha$ (finite_strain_j2). */
+      double
+      equivalent_plastic_strain(
+        const ArrayView<const double> &state) const override;
+
       void
       evaluate(const Tensor<2, dim> &         F,
                const ArrayView<const double> &state_old,
@@ -70,6 +75,10 @@ namespace rubberdyn
 
       void
       print_constants(std::ostream &out) const override;
+
+      /** A FiniteStrainJ2StressKernel with this law's constants. */
+      std::unique_ptr<StressKernel>
+      create_stress_kernel() const override;
 
     private:
       finite_strain_j2::ElasticModuli moduli;

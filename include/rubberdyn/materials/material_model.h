@@ -133,6 +133,15 @@ namespace rubberdyn
       initialize_state(const ArrayView<double> &state) const;
 
       /**
+       * The equivalent plastic strain $\alpha$ (-) held in the history
+       * @p state of a point (size n_state_variables()), for the ParaView
+       * field `equivalent_plastic_strain`; 0 for a law without plasticity
+       * (the default).
+       */
+      virtual double
+      equivalent_plastic_strain(const ArrayView<const double> &state) const;
+
+      /**
        * Evaluate the law at deformation gradient @p F.
        *
        * @param F Deformation gradient at the end of the step.

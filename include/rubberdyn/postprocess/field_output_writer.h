@@ -31,9 +31,10 @@ namespace rubberdyn
      * The cell data of the solid's state at displacement @p u (ghosted),
      * one value per active cell (locally owned cells filled): the cell
      * averages of the Cauchy stress components (`cauchy_stress_xx` ...
-     * `_yz`), `von_mises_stress` and `pressure` (GPa), `J`, `part_id` (index
-     * in the model's parts) and `material_id`: what every scheme writes
-     * with FieldOutput.
+     * `_yz`), `von_mises_stress` and `pressure` (GPa), `J`,
+     * `equivalent_plastic_strain` (-, 0 in laws without plasticity),
+     * `part_id` (index in the model's parts) and `material_id`: what every
+     * scheme writes with FieldOutput.
      */
     std::vector<std::pair<std::string, std::vector<float>>>
     solid_cell_data(const model::Model               &model,
@@ -44,7 +45,7 @@ namespace rubberdyn
      * The ParaView series as a postprocessor: at every `Field output
      * interval` and at the end of the run it writes the displacement and
      * velocity, the cell averages of the Cauchy stress, von Mises stress,
-     * pressure and J, and per cell the MPI rank, the part id (index in the
+     * pressure, J and equivalent plastic strain, and per cell the MPI rank, the part id (index in the
      * model's part list) and the material id. It also tracks the smallest
      * Jacobian determinants at its output times (run_summary.json).
      */
