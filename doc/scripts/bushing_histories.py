@@ -143,8 +143,9 @@ def main():
                "not before the end"))
         print("  bolt_axial_force %.4g to %.4g kN; outer_sleeve_pull_out "
               "%.4g to %.4g mm" % (e["bolt_force"] + e["pull_out"]))
+        # (The column energy_error is a fraction of the largest energy.)
         print("  largest energy error %.3g %% of the largest energy" %
-              e["energy_error"])
+              (100. * e["energy_error"]))
     labels = ["drop_weight_force (kN)", "bolt_axial_force (kN)",
               "bolt_bending_moment (kN mm)", "inner_sleeve_slip (mm)",
               "outer_sleeve_pull_out (mm)"]
