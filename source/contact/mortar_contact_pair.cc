@@ -455,8 +455,8 @@ namespace rubberdyn
       open_node.assign(x.size(), 0);
       // Per gap facet: clearly open towards each of its candidates, by
       // 1e-9 of its diagonal (far above the heights' round-off).
-      std::vector<char> separated(pass.gap_facets.size(), 0);
-      FacetCorners      master_corners;
+      open_facet.assign(pass.gap_facets.size(), 0);
+      FacetCorners master_corners;
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
           const auto             &s = facet_nodes[pass.gap_facets[i]];
@@ -474,7 +474,7 @@ namespace rubberdyn
                   break;
                 }
             }
-          separated[i] = open;
+          open_facet[i] = open;
         }
       // A node is open if all its gap facets are, and its normal points
       // their normals' way (so that a positive multiple of a facet's
@@ -488,11 +488,8 @@ namespace rubberdyn
                ++j)
             {
               const unsigned int i = pass.node_gap_facets[j];
-              const auto        &s = facet_nodes[pass.gap_facets[i]];
-              open = separated[i] &&
-                     normal[node] * cross_product_3d(x[s[2]] - x[s[0]],
-                                                     x[s[3]] - x[s[1]]) >
-                       0.;
+              open = open_facet[i] &&
+                     normal[node] * slave_facets[i].unit_normal() > 0.;
             }
           open_node[node] = open;
         }

@@ -427,6 +427,10 @@ namespace rubberdyn
       /** By node index: open (mark_open_nodes()). */
       std::vector<char> open_node;
 
+      /** Scratch of mark_open_nodes(), by gap facet: clearly open towards
+       * all its candidates (capacity kept between evaluations). */
+      std::vector<char> open_facet;
+
       /** Scratch of integrate(): the gap facets prepared for their
        * segments (capacity kept between evaluations). */
       std::vector<MortarSlaveFacet> slave_facets;

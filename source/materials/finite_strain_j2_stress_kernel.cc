@@ -17,15 +17,18 @@ namespace rubberdyn
 
       // Pass 1: the trial state of finite_strain_j2::update() (Simo &
       // Hughes Box 9.1, step 1) at every point. Without history (the
-      // elastic law) C_p^{-1} = I. Outputs, each with stride n: J, the
-      // trial b_e (xx, yy, zz, xy, xz, yz) and ||s_trial|| = G ||dev b_e||.
+      // elastic law) C_p^{-1} = I. Outputs, each with stride n: J,
+      // J^{-2/3}, the trial b_e (xx, yy, zz, xy, xz, yz), I_e = tr(b_e)/3
+      // (mu_bar = G I_e) and ||s_trial|| = G ||dev b_e||.
       template <bool with_history>
       inline __attribute__((always_inline)) void
       trial_points_loop(const double G,
                         const double *__restrict F,
                         const double *__restrict Cp_inv,
                         double *__restrict J_out,
+                        double *__restrict J_m23_out,
                         double *__restrict be,
+                        double *__restrict Ie_out,
                         double *__restrict s_norm)
       {
         for (std::size_t i = 0; i < n; ++i)
@@ -82,6 +85,8 @@ namespace rubberdyn
             const double Ie  = (b00 + b11 + b22) * (1. / 3.);
             const double d00 = b00 - Ie, d11 = b11 - Ie, d22 = b22 - Ie;
             J_out[i]      = J;
+            J_m23_out[i]  = J_m23;
+            Ie_out[i]     = Ie;
             be[0 * n + i] = b00;
             be[1 * n + i] = b11;
             be[2 * n + i] = b22;
@@ -96,8 +101,8 @@ namespace rubberdyn
 
 
 
-      // Pass 3: stress, energy and wave speed from the trial state and the
-      // increments delta_alpha (0 at elastic points) of pass 2; with
+      // Pass 3: stress, energy and wave speed from pass 1's trial state and
+      // pass 2's increments delta_alpha (0 at elastic points); with
       // history, the new C_p^{-1} (stride n). Invalid points (det F <= 0 or
       // not finite) get a NaN wave speed.
       template <bool with_history>
@@ -107,7 +112,9 @@ namespace rubberdyn
                         const double inverse_density,
                         const double *__restrict F,
                         const double *__restrict J_in,
+                        const double *__restrict J_m23,
                         const double *__restrict be,
+                        const double *__restrict Ie_in,
                         const double *__restrict s_norm,
                         const double *__restrict delta_alpha,
                         const double *__restrict Cp_inv_old,
@@ -125,7 +132,7 @@ namespace rubberdyn
             const double b00 = be[0 * n + i], b11 = be[1 * n + i],
                          b22 = be[2 * n + i], b01 = be[3 * n + i],
                          b02 = be[4 * n + i], b12 = be[5 * n + i];
-            const double Ie     = (b00 + b11 + b22) * (1. / 3.);
+            const double Ie     = Ie_in[i];
             const double mu_bar = G * Ie;
 
             // Radial return: s = (1 - beta_1) s_trial with beta_1 =
@@ -196,8 +203,7 @@ namespace rubberdyn
                              B20 = G20 * e00 + G21 * e01 + G22 * e02,
                              B21 = G20 * e01 + G21 * e11 + G22 * e12,
                              B22 = G20 * e02 + G21 * e12 + G22 * e22;
-                const double J_m13 = simd_math::inverse_cube_root(J);
-                const double J_23  = 1. / (J_m13 * J_m13);
+                const double J_23 = 1. / J_m23[i];
                 const double c[6] = {
                   J_23 * (B00 * G00 + B01 * G01 + B02 * G02),
                   J_23 * (B10 * G10 + B11 * G11 + B12 * G12),
@@ -223,13 +229,15 @@ namespace rubberdyn
                    const double *__restrict F,
                    const double *__restrict Cp_inv,
                    double *__restrict J,
+                   double *__restrict J_m23,
                    double *__restrict be,
+                   double *__restrict Ie,
                    double *__restrict s_norm)
       {
         if (with_history)
-          trial_points_loop<true>(G, F, Cp_inv, J, be, s_norm);
+          trial_points_loop<true>(G, F, Cp_inv, J, J_m23, be, Ie, s_norm);
         else
-          trial_points_loop<false>(G, F, Cp_inv, J, be, s_norm);
+          trial_points_loop<false>(G, F, Cp_inv, J, J_m23, be, Ie, s_norm);
       }
 
 
@@ -241,7 +249,9 @@ namespace rubberdyn
                    const double inverse_density,
                    const double *__restrict F,
                    const double *__restrict J,
+                   const double *__restrict J_m23,
                    const double *__restrict be,
+                   const double *__restrict Ie,
                    const double *__restrict s_norm,
                    const double *__restrict delta_alpha,
                    const double *__restrict Cp_inv_old,
@@ -251,13 +261,13 @@ namespace rubberdyn
                    double *__restrict wave_speed)
       {
         if (with_history)
-          final_points_loop<true>(G, K, inverse_density, F, J, be, s_norm,
-                                  delta_alpha, Cp_inv_old, Cp_inv_new, tau,
-                                  energy, wave_speed);
+          final_points_loop<true>(G, K, inverse_density, F, J, J_m23, be, Ie,
+                                  s_norm, delta_alpha, Cp_inv_old, Cp_inv_new,
+                                  tau, energy, wave_speed);
         else
-          final_points_loop<false>(G, K, inverse_density, F, J, be, s_norm,
-                                   delta_alpha, Cp_inv_old, Cp_inv_new, tau,
-                                   energy, wave_speed);
+          final_points_loop<false>(G, K, inverse_density, F, J, J_m23, be, Ie,
+                                   s_norm, delta_alpha, Cp_inv_old,
+                                   Cp_inv_new, tau, energy, wave_speed);
       }
     } // namespace
 
@@ -297,13 +307,14 @@ namespace rubberdyn
           {
             for (std::size_t k = 0; k < 6; ++k)
               Cp_inv_old[k * n + i] = state_old[i * n_state + k];
-            alpha_old[i] = state_old[i * n_state + equivalent_plastic_strain_index];
+            alpha_old[i] =
+              state_old[i * n_state + equivalent_plastic_strain_index];
           }
 
-      alignas(64) double J[n], be[6 * n], s_norm[n];
+      alignas(64) double J[n], J_m23[n], be[6 * n], Ie[n], s_norm[n];
       // (The elastic law's passes never read the history arrays.)
       trial_points(with_history, G, F, with_history ? Cp_inv_old : nullptr,
-                   J, be, s_norm);
+                   J, J_m23, be, Ie, s_norm);
 
       // Pass 2: yield check and return mapping, point by point.
       alignas(64) double delta_alpha[n];
@@ -323,10 +334,8 @@ namespace rubberdyn
               if (q_trial > initial_yield_stress &&
                   q_trial > hardening->yield_stress(alpha_old[i]))
                 {
-                  const double mu_bar =
-                    G * (be[0 * n + i] + be[1 * n + i] + be[2 * n + i]) / 3.;
                   delta_alpha[i] =
-                    hardening->solve_return(q_trial, mu_bar, alpha_old[i]);
+                    hardening->solve_return(q_trial, G * Ie[i], alpha_old[i]);
                   // Dissipation k(alpha_{n+1}) delta alpha (backward Euler).
                   if (delta_alpha[i] > 0.)
                     dissipation_increment[i] =
@@ -337,7 +346,7 @@ namespace rubberdyn
         }
 
       final_points(with_history, G, moduli.bulk_modulus, 1. / moduli.density,
-                   F, J, be, s_norm, delta_alpha,
+                   F, J, J_m23, be, Ie, s_norm, delta_alpha,
                    with_history ? Cp_inv_old : nullptr, Cp_inv_new, tau,
                    energy, wave_speed);
 

@@ -101,7 +101,8 @@ main(int argc, char **argv)
     std::vector<double> j2, elastic;
     for (const auto &cell : tria.active_cell_iterators())
       (cell->material_id() == 1 ? j2 : elastic)
-        .push_back(averages.equivalent_plastic_strain[cell->active_cell_index()]);
+        .push_back(
+          averages.equivalent_plastic_strain[cell->active_cell_index()]);
     return std::make_pair(j2, elastic);
   };
   // The largest relative difference of the J2 cells' values from @p exact,
@@ -142,7 +143,8 @@ main(int argc, char **argv)
 
   // 3. Further loading: the law from the accepted history (that of step
   //    2: C_p^{-1} and alpha of the first return).
-  std::vector<double> state_virgin(materials::finite_strain_j2::n_state_variables),
+  std::vector<double> state_virgin(
+    materials::finite_strain_j2::n_state_variables),
     state_1(state_virgin.size()), state_2(state_virgin.size()),
     state_3(state_virgin.size());
   bolt.initialize_state(make_array_view(state_virgin));
@@ -159,7 +161,8 @@ main(int argc, char **argv)
                 make_array_view(state_2), false, response);
   bolt.evaluate(isochoric(1.04), make_array_view(state_2),
                 make_array_view(state_3), false, response);
-  const double alpha3 = bolt.equivalent_plastic_strain(make_array_view(state_3));
+  const double alpha3 =
+    bolt.equivalent_plastic_strain(make_array_view(state_3));
   check(std::abs(alpha1 - bolt.equivalent_plastic_strain(
                             make_array_view(state_1))) < 1e-12 * alpha1,
         "the law's first return is the closed form");

@@ -144,6 +144,16 @@ namespace rubberdyn
       clearly_open(const FacetCornersOf<Number> &master,
                    const double                  clearance) const;
 
+      /**
+       * The unit normal of the auxiliary plane (the diagonals' cross
+       * product, normalised; zero for a facet without area).
+       */
+      const Tensor<1, 3, Number> &
+      unit_normal() const
+      {
+        return normal;
+      }
+
     private:
       /**
        * The cheap tests of integrate(): whether @p master faces this facet
@@ -151,10 +161,9 @@ namespace rubberdyn
        * bounding box that meets this facet's.
        */
       bool
-      may_overlap(const FacetCornersOf<Number>               &master,
-                  mortar_segment_internal::PlanePoint<Number> (&master_corner)[4])
-        const;
-
+      may_overlap(
+        const FacetCornersOf<Number>                &master,
+        mortar_segment_internal::PlanePoint<Number> (&master_corner)[4]) const;
 
       /** True for a facet without area (no segment then). */
       bool degenerate;

@@ -67,9 +67,10 @@ namespace rubberdyn
 
       /**
        * Cell averages of the Cauchy stress, von Mises stress, pressure, J
-       * and the equivalent plastic strain at displacement @p u, one value per active cell in the order of
-       * the triangulation's active cell iterator (locally owned cells
-       * filled, the others zero): the ParaView fields.
+       * and the equivalent plastic strain at displacement @p u, one value
+       * per active cell in the order of the triangulation's active cell
+       * iterator (locally owned cells filled, the others zero): the
+       * ParaView fields.
        */
       virtual CellAverages
       cell_averages(const VectorType  &u,

@@ -45,8 +45,9 @@ namespace rubberdyn
      * The ParaView series as a postprocessor: at every `Field output
      * interval` and at the end of the run it writes the displacement and
      * velocity, the cell averages of the Cauchy stress, von Mises stress,
-     * pressure, J and equivalent plastic strain, and per cell the MPI rank, the part id (index in the
-     * model's part list) and the material id. It also tracks the smallest
+     * pressure, J and equivalent plastic strain, and per cell the MPI rank,
+     * the part id (index in the model's part list) and the material id. It
+     * also tracks the smallest
      * Jacobian determinants at its output times (run_summary.json).
      */
     class FieldOutputWriter : public Postprocessor
