@@ -142,6 +142,11 @@ namespace rubberdyn
           if (i < partitioner->locally_owned_size())
             owned_surface_dofs.push_back(i);
       std::sort(owned_surface_dofs.begin(), owned_surface_dofs.end());
+      for (std::vector<double> *values : {&audit.u_accepted,
+                                          &audit.f_accepted,
+                                          &audit.u_trial,
+                                          &audit.f_trial})
+        values->assign(owned_surface_dofs.size(), 0.);
       const unsigned int n_nodes = node_dofs.size();
       x                          = node_reference;
       area.assign(n_nodes, 0.);
@@ -350,6 +355,23 @@ namespace rubberdyn
         u_pair.local_element(i) = u.local_element(i);
       u_pair.update_ghost_values();
       update_positions(u_pair);
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::book_trial_work()
+    {
+      double work = 0.;
+      for (unsigned int k = 0; k < owned_surface_dofs.size(); ++k)
+        {
+          const unsigned int i = owned_surface_dofs[k];
+          audit.u_trial[k]     = u_pair.local_element(i);
+          audit.f_trial[k]     = f_pair.local_element(i);
+          work += (audit.f_accepted[k] + audit.f_trial[k]) *
+                  (audit.u_trial[k] - audit.u_accepted[k]);
+        }
+      audit.trial_work = audit.started ? audit.accepted_work + 0.5 * work : 0.;
     }
 
 
@@ -669,6 +691,25 @@ namespace rubberdyn
 
 
 
+    double
+    MortarContactPair::contact_energy() const
+    {
+      return impl->energy;
+    }
+
+
+
+    double
+    MortarContactPair::energy_error() const
+    {
+      const Implementation::WorkAudit &audit = impl->audit;
+      return audit.started ? audit.trial_work + impl->energy +
+                               friction_work() - audit.energy_at_start :
+                             0.;
+    }
+
+
+
     void
     MortarContactPair::add_forces(const model::EvaluationPoint &point,
                                   VectorType                   &f,
@@ -894,6 +935,7 @@ namespace rubberdyn
       I.f_pair.compress(VectorOperation::add);
       for (const unsigned int i : I.owned_surface_dofs)
         f.local_element(i) += I.f_pair.local_element(i);
+      I.book_trial_work();
       // The springs' energy less what the penalty updates put in: the work
       // done on them.
       energy -= I.accepted_stiffness_energy + I.trial_stiffness_energy;
@@ -936,6 +978,14 @@ namespace rubberdyn
       Implementation &I = *impl;
       if (!I.trial_pending)
         return;
+      if (!I.audit.started)
+        {
+          I.audit.started         = true;
+          I.audit.energy_at_start = I.energy + friction_work();
+        }
+      I.audit.accepted_work = I.audit.trial_work;
+      std::swap(I.audit.u_accepted, I.audit.u_trial);
+      std::swap(I.audit.f_accepted, I.audit.f_trial);
       I.accepted_stiffness_energy += I.trial_stiffness_energy;
       I.trial_stiffness_energy = 0.;
       for (Implementation::Pass &pass : I.passes)
@@ -1016,6 +1066,17 @@ namespace rubberdyn
       binary_io::write_doubles(out, &I.accepted_stiffness_energy, 1);
       for (const Implementation::Pass &pass : I.passes)
         binary_io::write_doubles(out, &pass.accepted_penalty, 1);
+      // The work audit.
+      const double audit[] = {double(I.audit.started),
+                              I.audit.accepted_work,
+                              I.audit.energy_at_start};
+      binary_io::write_doubles(out, audit, std::size(audit));
+      binary_io::write_doubles(out,
+                               I.audit.u_accepted.data(),
+                               I.audit.u_accepted.size());
+      binary_io::write_doubles(out,
+                               I.audit.f_accepted.data(),
+                               I.audit.f_accepted.size());
       if (!I.coulomb || I.x.empty())
         return;
       // Friction's history: the accepted tractions and spring energies,
@@ -1074,6 +1135,10 @@ namespace rubberdyn
                     (I.coulomb ? (5 * I.passes.size() + 3) * n : 0),
                   ExcMessage("The friction state of the contact pair '" +
                              I.definition.name + "' does not fit it"));
+      // The explicit run's energy balance, and the pair's, start here.
+      I.audit.started       = false;
+      I.audit.accepted_work = 0.;
+      I.audit.trial_work    = 0.;
       if (!I.coulomb)
         return;
       const double *value = state.data();
@@ -1128,6 +1193,20 @@ namespace rubberdyn
                                 &pass.accepted_penalty,
                                 1,
                                 "contact pair accepted penalty");
+      double audit[3];
+      binary_io::read_doubles(in, audit, 3, "contact pair work audit");
+      I.audit.started         = audit[0] != 0.;
+      I.audit.accepted_work   = audit[1];
+      I.audit.trial_work      = audit[1];
+      I.audit.energy_at_start = audit[2];
+      binary_io::read_doubles(in,
+                              I.audit.u_accepted.data(),
+                              I.audit.u_accepted.size(),
+                              "contact pair audit displacements");
+      binary_io::read_doubles(in,
+                              I.audit.f_accepted.data(),
+                              I.audit.f_accepted.size(),
+                              "contact pair audit forces");
       I.trial_stiffness_energy = 0.;
       // The candidates are found anew from the loaded positions (the
       // segments do not depend on which extra candidates a search keeps).

@@ -181,6 +181,15 @@ namespace rubberdyn
       void
       load_positions(const VectorType &u);
 
+      /**
+       * The work audit's trial: the pair's forces on this rank's owned
+       * surface dofs (f_pair, after the evaluation) and the displacements
+       * there (u_pair, load_positions()), and the work up to them by the
+       * trapezoidal rule from the accepted ones.
+       */
+      void
+      book_trial_work();
+
       /** Rebuild the candidate lists if a node moved far enough. */
       void
       search_if_needed();
@@ -438,6 +447,29 @@ namespace rubberdyn
       /** Whether the last evaluation left facets out (integrate()), so
        * that the shown gaps of open nodes need refresh_shown_gaps(). */
       bool shown_gaps_partial = false;
+
+      /**
+       * The work the pair's forces did on the solid, for the pair's energy
+       * error (MortarContactPair::energy_error()): by the trapezoidal rule
+       * over the accepted evaluations since the first one of the run (the
+       * hand-off from a preload starts it again), on this rank's owned
+       * surface dofs. A conservative pair's work is minus the change of its
+       * springs' energy less its friction work.
+       */
+      struct WorkAudit
+      {
+        /** Whether an evaluation has been accepted since the start. */
+        bool started = false;
+        /** Work up to the accepted evaluation and to the last one (J). */
+        double accepted_work = 0., trial_work = 0.;
+        /** Springs' energy plus friction work at the first accepted
+         * evaluation (J). */
+        double energy_at_start = 0.;
+        /** By owned surface dof: displacement (mm) and force on the solid
+         * (kN) of the accepted and of the last evaluation. */
+        std::vector<double> u_accepted, f_accepted, u_trial, f_trial;
+      };
+      WorkAudit audit;
     };
   } // namespace contact
 } // namespace rubberdyn

@@ -46,7 +46,9 @@ namespace rubberdyn
                                    "_max_penetration",
                                    "_active_nodes",
                                    "_slipping_nodes",
-                                   "_friction_work"})
+                                   "_friction_work",
+                                   "_contact_energy",
+                                   "_energy_error"})
           columns.push_back(pair + column);
       return columns;
     }
@@ -82,7 +84,9 @@ namespace rubberdyn
                        s.contact_area,
                        double(s.active_nodes),
                        double(s.slipping_nodes),
-                       pair->friction_work()});
+                       pair->friction_work(),
+                       pair->contact_energy(),
+                       pair->energy_error()});
           maxima.insert(maxima.end(), {s.max_pressure, s.max_penetration});
           minima.push_back(s.min_pressure);
         }
@@ -95,7 +99,7 @@ namespace rubberdyn
                ArrayView<double>(minima));
       for (unsigned int p = 0; p < pairs.size(); ++p)
         {
-          const double *sum    = &sums[9 * p];
+          const double *sum    = &sums[11 * p];
           const bool    active = sum[6] > 0.;
           values.insert(values.end(),
                         {sum[0],
@@ -109,7 +113,9 @@ namespace rubberdyn
                          maxima[2 * p + 1],
                          sum[6],
                          sum[7],
-                         sum[8]});
+                         sum[8],
+                         sum[9],
+                         sum[10]});
         }
     }
 

@@ -279,6 +279,30 @@ namespace rubberdyn
       double
       friction_work() const;
 
+      /**
+       * Energy in the pair's penalty springs at the last evaluation, less
+       * what the penalty updates added to them (the term the energy balance
+       * books as contact energy), this rank's nodes (J).
+       */
+      double
+      contact_energy() const;
+
+      /**
+       * The energy the pair created since the run's first accepted
+       * evaluation (J, this rank's share; negative: destroyed): the work
+       * its forces did on the solid (trapezoidal rule over the accepted
+       * evaluations) plus the change of contact_energy() plus the
+       * friction_work() since then. Zero for a pair whose forces derive
+       * from its springs' energy; the parts it leaves out (the nodal
+       * normals', the mortar integrals' and the covered areas' change with
+       * the motion) and the time discretisation show here. The sum over
+       * the pairs is their share of the run's energy error. 0 before the
+       * first accepted evaluation; the hand-off from a preload
+       * (set_friction_state()) starts it again.
+       */
+      double
+      energy_error() const;
+
       /** The pair's penalty stiffness per area of each pass (GPa/mm). */
       double
       penalty_stiffness() const;

@@ -25,9 +25,12 @@ namespace rubberdyn
      * side), `<pair>_max_pressure` and `<pair>_min_pressure` (GPa, over the
      * active slave nodes; 0 when none is active), `<pair>_contact_area`
      * (mm^2, their covered area), `<pair>_max_penetration` (mm),
-     * `<pair>_active_nodes`, `<pair>_slipping_nodes` and
-     * `<pair>_friction_work` (J). Reduced over the ranks at output times
-     * only.
+     * `<pair>_active_nodes`, `<pair>_slipping_nodes`,
+     * `<pair>_friction_work` (J), `<pair>_contact_energy` (J, the springs'
+     * energy as the energy balance books it) and `<pair>_energy_error` (J,
+     * the energy the pair created since the run's start:
+     * MortarContactPair::energy_error()). Reduced over the ranks at output
+     * times only.
      */
     class ContactPairColumns : public Postprocessor
     {
