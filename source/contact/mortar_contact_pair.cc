@@ -142,11 +142,8 @@ namespace rubberdyn
           if (i < partitioner->locally_owned_size())
             owned_surface_dofs.push_back(i);
       std::sort(owned_surface_dofs.begin(), owned_surface_dofs.end());
-      for (std::vector<double> *values : {&audit.u_accepted,
-                                          &audit.f_accepted,
-                                          &audit.u_trial,
-                                          &audit.f_trial})
-        values->assign(owned_surface_dofs.size(), 0.);
+      audit.u_accepted.assign(owned_surface_dofs.size(), 0.);
+      audit.f_accepted.assign(owned_surface_dofs.size(), 0.);
       const unsigned int n_nodes = node_dofs.size();
       x                          = node_reference;
       area.assign(n_nodes, 0.);
@@ -366,10 +363,8 @@ namespace rubberdyn
       for (unsigned int k = 0; k < owned_surface_dofs.size(); ++k)
         {
           const unsigned int i = owned_surface_dofs[k];
-          audit.u_trial[k]     = u_pair.local_element(i);
-          audit.f_trial[k]     = f_pair.local_element(i);
-          work += (audit.f_accepted[k] + audit.f_trial[k]) *
-                  (audit.u_trial[k] - audit.u_accepted[k]);
+          work += (audit.f_accepted[k] + f_pair.local_element(i)) *
+                  (u_pair.local_element(i) - audit.u_accepted[k]);
         }
       audit.trial_work = audit.started ? audit.accepted_work + 0.5 * work : 0.;
     }
@@ -983,9 +978,14 @@ namespace rubberdyn
           I.audit.started         = true;
           I.audit.energy_at_start = I.energy + friction_work();
         }
+      // (u_pair and f_pair still hold the last evaluation's values.)
       I.audit.accepted_work = I.audit.trial_work;
-      std::swap(I.audit.u_accepted, I.audit.u_trial);
-      std::swap(I.audit.f_accepted, I.audit.f_trial);
+      for (unsigned int k = 0; k < I.owned_surface_dofs.size(); ++k)
+        {
+          const unsigned int i  = I.owned_surface_dofs[k];
+          I.audit.u_accepted[k] = I.u_pair.local_element(i);
+          I.audit.f_accepted[k] = I.f_pair.local_element(i);
+        }
       I.accepted_stiffness_energy += I.trial_stiffness_energy;
       I.trial_stiffness_energy = 0.;
       for (Implementation::Pass &pass : I.passes)

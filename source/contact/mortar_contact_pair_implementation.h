@@ -182,9 +182,9 @@ namespace rubberdyn
       load_positions(const VectorType &u);
 
       /**
-       * The work audit's trial: the pair's forces on this rank's owned
-       * surface dofs (f_pair, after the evaluation) and the displacements
-       * there (u_pair, load_positions()), and the work up to them by the
+       * The work audit's trial: the work up to the pair's forces on this
+       * rank's owned surface dofs (f_pair, after the evaluation) at the
+       * displacements there (u_pair, load_positions()), by the
        * trapezoidal rule from the accepted ones.
        */
       void
@@ -466,8 +466,9 @@ namespace rubberdyn
          * evaluation (J). */
         double energy_at_start = 0.;
         /** By owned surface dof: displacement (mm) and force on the solid
-         * (kN) of the accepted and of the last evaluation. */
-        std::vector<double> u_accepted, f_accepted, u_trial, f_trial;
+         * (kN) of the accepted evaluation (the last one's are in u_pair and
+         * f_pair). */
+        std::vector<double> u_accepted, f_accepted;
       };
       WorkAudit audit;
     };
