@@ -3,7 +3,8 @@
 // washer clamping the aluminium inner sleeve of a rubber bushing against a
 // sheet-metal brace; the rubber body with its two end lips, a plastic and a
 // metal outer sleeve; the plate hit by the drop weight, held by the metal
-// sleeve at one end and lying on a support at the other; the drop weight.
+// sleeve at one end and lying on a support at the other, its last
+// clamp_size bolted to the support; the drop weight.
 // Full 3D model, hexahedra only. Lengths in mm.
 //
 // The study's CAD is not public. This layout and every default below are
@@ -109,12 +110,15 @@
 //      outer sleeves' ends touch     17 the lips' rims
 //   18 plastic sleeve inner  19 plastic sleeve outer  20 its ends
 //   21 metal sleeve inner  22 metal sleeve outer (off the plate)  23 ends
-//   24 plate top   25 plate bottom   26 plate's other free faces (edges)
+//   24 plate top (but its clamp patch)   25 plate bottom
+//   26 plate's other free faces (edges)
 //   27 brace underside (z = L)   28 brace top (but the clamp patches)
 //   29, 30, 31 the clamp patches on the brace top: back (-x), front +y,
 //      front -y   32 brace hole wall   33 brace rims
 //   34 support top   35 support's other faces
 //   36 drop weight bottom   37 drop weight's other faces
+//   38 plate clamp: the plate's top over its last clamp_size (bolted to
+//      the support)
 //
 // Mesh density: n multiplies the element counts (n = 1: a coarse mesh of
 // a few thousand cells for tests; the default n = 2 is the study's mesh)
@@ -181,7 +185,7 @@ DefineConstant[ plate_end = 300. ];
 // Brace: a pressed steel bracket 4 thick above the bushing, reaching
 // x = -brace_back and y = +-brace_half_width; the O-grid square around the
 // hole has the half-width brace_square; the clamped (bolted) areas are
-// clamp_size wide.
+// clamp_size wide, as is the plate's bolted end on the support.
 DefineConstant[ brace_thickness = 4. ];
 DefineConstant[ brace_square = 25. ];
 DefineConstant[ brace_back = 90. ];
@@ -197,6 +201,16 @@ DefineConstant[ weight_length = 60. ];
 DefineConstant[ weight_width = 60. ];
 DefineConstant[ weight_height = 40. ];
 DefineConstant[ weight_gap = 0.5 ];
+// The edges of the drop weight's bottom and of the support's top that run
+// across the plate (along y) are rounded with this radius, twice the
+// plate's thickness, as bending tools' are: a sharp rigid edge cuts into
+// the plate's facets where it folds (doc/bushing.md, "The rig"). 0: sharp
+// edges.
+DefineConstant[ edge_radius = 10. ];
+// Flat facets along each rounded edge (a quarter circle; even), the same
+// at every n: the drop weight's volume, and with it its density for a
+// given mass, does not depend on the mesh.
+DefineConstant[ edge_facets = 8 ];
 // The pretension section: a plane across the shank between washer (z = 0)
 // and brace (z = L), inside the inner sleeve. A layer of shank elements
 // (4 / n high) is centred on it, so that the plane cuts that layer's
@@ -246,9 +260,21 @@ EndIf
 If (!(metal_radius + 1. < plate_half_width &&
       plate_half_width < weight_x && weight_x + weight_length <
       plate_end - support_length && brace_square + clamp_size < weight_x &&
+      clamp_size < support_length &&
       hole_radius < brace_square && lip_radius < brace_square + clamp_size &&
       lip_radius < brace_half_width && lip_radius < brace_back))
   Error("bushing.geo: inconsistent plate, brace or drop weight extents");
+  Abort;
+EndIf
+If (!(edge_radius >= 0. && 2. * edge_radius < weight_length &&
+      2. * edge_radius < support_length && edge_radius < weight_height &&
+      edge_radius < support_height))
+  Error("bushing.geo: edge_radius must lie between 0 and half the drop "
+        "weight's and the support's length and below their heights");
+  Abort;
+EndIf
+If (edge_facets < 2 || edge_facets % 2 != 0)
+  Error("bushing.geo: edge_facets must be an even number of at least 2");
   Abort;
 EndIf
 
@@ -486,6 +512,150 @@ Macro MakeBlock
   box_volume = box_v[1]; box_bottom = box_f[1]; box_top = box_v[0];
 Return
 
+// RoundedBlock: a block from (box_x, box_y, box_z), edges box_dx, box_dy,
+// box_dz, whose two edges along y on the face z = box_z are rounded with
+// the radius box_r (> 0); box_s = +1: the block lies above z = box_z, -1:
+// below it. Made as a profile in the xz-plane, extruded along y (box_ny
+// cells). Each rounded corner is a quarter disc of three quads (its centre
+// square and two quads on the arc, 2 box_m cells along the arc, box_k
+// radially beyond the square); between the corners box_nx cells along x,
+// beyond the radius box_nz cells along z. The profile's quads have their
+// normals along the extrusion (positive hexahedra): for box_s = -1, whose
+// profile is the mirror image, it is extruded the other way (from y =
+// box_y + box_dy). Output box_volumes[].
+Macro RoundedBlock
+  rb_x[] = {box_x, box_x + box_r, box_x + box_dx - box_r, box_x + box_dx};
+  rb_y = (box_s > 0) ? box_y : box_y + box_dy;
+  // z of the profile's levels: the face, the corners' centres, the far face
+  rb_z[] = {box_z, box_z + box_s * box_r, box_z + box_s * box_dz};
+  // Corner points: level 1 (A_L, O_L, O_R, A_R), level 0 (B_L, B_R), level
+  // 2 (the far face's four), then per corner R1 (on O-A), R2 (on O-B), Q
+  // (inside) and M (the arc's middle).
+  rb_p[] = {};
+  For rb_i In {0:3}
+    rb_p[] += newp; Point(newp) = {rb_x[rb_i], rb_y, rb_z[1]};
+  EndFor
+  For rb_i In {1:2}
+    rb_p[] += newp; Point(newp) = {rb_x[rb_i], rb_y, rb_z[0]};
+  EndFor
+  For rb_i In {0:3}
+    rb_p[] += newp; Point(newp) = {rb_x[rb_i], rb_y, rb_z[2]};
+  EndFor
+  rb_o[] = {rb_p[1], rb_p[2]};       // the corners' centres
+  rb_a[] = {rb_p[0], rb_p[3]};       // the arcs' ends on level 1
+  rb_b[] = {rb_p[4], rb_p[5]};       // the arcs' ends on level 0
+  rb_r1[] = {}; rb_r2[] = {}; rb_q[] = {}; rb_m[] = {};
+  For rb_c In {0:1}
+    rb_sx = (rb_c == 0) ? -1 : 1;    // from the centre towards the edge
+    rb_ox = rb_x[1 + rb_c];
+    rb_r1[] += newp;
+    Point(newp) = {rb_ox + rb_sx * box_r / 2., rb_y, rb_z[1]};
+    rb_r2[] += newp;
+    Point(newp) = {rb_ox, rb_y, rb_z[1] - box_s * box_r / 2.};
+    rb_q[] += newp;
+    Point(newp) = {rb_ox + rb_sx * 0.45 * box_r, rb_y,
+                   rb_z[1] - box_s * 0.45 * box_r};
+    rb_m[] += newp;
+    Point(newp) = {rb_ox + rb_sx * c45 * box_r, rb_y,
+                   rb_z[1] - box_s * c45 * box_r};
+  EndFor
+  // Curves of each corner: 0 A-M, 1 M-B (arcs), 2 A-R1, 3 R1-O, 4 B-R2,
+  // 5 R2-O, 6 R1-Q, 7 Q-R2, 8 M-Q.
+  rb_l[] = {};
+  For rb_c In {0:1}
+    rb_l[] += newl; Circle(newl) = {rb_a[rb_c], rb_o[rb_c], rb_m[rb_c]};
+    rb_l[] += newl; Circle(newl) = {rb_m[rb_c], rb_o[rb_c], rb_b[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_a[rb_c], rb_r1[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_r1[rb_c], rb_o[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_b[rb_c], rb_r2[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_r2[rb_c], rb_o[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_r1[rb_c], rb_q[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_q[rb_c], rb_r2[rb_c]};
+    rb_l[] += newl; Line(newl) = {rb_m[rb_c], rb_q[rb_c]};
+    Transfinite Curve {rb_l[{9 * rb_c + 0, 9 * rb_c + 1}]} = box_m + 1;
+    Transfinite Curve {rb_l[{9 * rb_c + 3, 9 * rb_c + 5, 9 * rb_c + 6,
+                             9 * rb_c + 7}]} = box_m + 1;
+    Transfinite Curve {rb_l[{9 * rb_c + 2, 9 * rb_c + 4, 9 * rb_c + 8}]} =
+      box_k + 1;
+  EndFor
+  // The straight curves between: 18 B_L-B_R, 19 O_L-O_R (box_nx), 20 A_L
+  // up, 21 O_L up, 22 O_R up, 23 A_R up (box_nz), 24 to 26 along the far
+  // face (left strip, core, right strip).
+  rb_l[] += newl; Line(newl) = {rb_b[0], rb_b[1]};
+  rb_l[] += newl; Line(newl) = {rb_o[0], rb_o[1]};
+  Transfinite Curve {rb_l[{18, 19}]} = box_nx + 1;
+  For rb_i In {0:3}
+    rb_l[] += newl; Line(newl) = {rb_p[rb_i], rb_p[6 + rb_i]};
+  EndFor
+  Transfinite Curve {rb_l[{20:23}]} = box_nz + 1;
+  For rb_i In {0:2}
+    rb_l[] += newl; Line(newl) = {rb_p[6 + rb_i], rb_p[7 + rb_i]};
+  EndFor
+  Transfinite Curve {rb_l[{24, 26}]} = box_k + box_m + 1;
+  Transfinite Curve {rb_l[25]} = box_nx + 1;
+  // The ten quads: per corner its three, then the left strip, the core,
+  // the right strip and the strip along the face between the corners.
+  rb_s[] = {};
+  For rb_c In {0:1}
+    rb_f = 9 * rb_c;
+    rb_loops[] = {};
+    rb_loops[] += newll;
+    Curve Loop(newll) = {rb_l[rb_f + 3], -rb_l[rb_f + 5], -rb_l[rb_f + 7],
+                         -rb_l[rb_f + 6]};
+    rb_loops[] += newll;
+    Curve Loop(newll) = {rb_l[rb_f + 2], rb_l[rb_f + 6], -rb_l[rb_f + 8],
+                         -rb_l[rb_f + 0]};
+    rb_loops[] += newll;
+    Curve Loop(newll) = {rb_l[rb_f + 8], rb_l[rb_f + 7], -rb_l[rb_f + 4],
+                         -rb_l[rb_f + 1]};
+    For rb_i In {0:2}
+      rb_new = news;
+      Plane Surface(rb_new) = {rb_loops[rb_i]};
+      rb_s[] += rb_new;
+    EndFor
+    Transfinite Surface {rb_s[3 * rb_c + 0]} = {rb_o[rb_c], rb_r1[rb_c],
+                                                rb_q[rb_c], rb_r2[rb_c]};
+    Transfinite Surface {rb_s[3 * rb_c + 1]} = {rb_a[rb_c], rb_r1[rb_c],
+                                                rb_q[rb_c], rb_m[rb_c]};
+    Transfinite Surface {rb_s[3 * rb_c + 2]} = {rb_m[rb_c], rb_q[rb_c],
+                                                rb_r2[rb_c], rb_b[rb_c]};
+  EndFor
+  rb_loops[] = {};
+  rb_loops[] += newll;    // left strip: A_L, O_L, top, top
+  Curve Loop(newll) = {rb_l[2], rb_l[3], rb_l[21], -rb_l[24], -rb_l[20]};
+  rb_loops[] += newll;    // core: O_L, O_R, top, top
+  Curve Loop(newll) = {rb_l[19], rb_l[22], -rb_l[25], -rb_l[21]};
+  rb_loops[] += newll;    // right strip: O_R, A_R, top, top
+  Curve Loop(newll) = {-rb_l[12], -rb_l[11], rb_l[23], -rb_l[26],
+                       -rb_l[22]};
+  rb_loops[] += newll;    // along the face: B_L, B_R, O_R, O_L
+  Curve Loop(newll) = {rb_l[18], rb_l[13], rb_l[14], -rb_l[19], -rb_l[5],
+                       -rb_l[4]};
+  For rb_i In {0:3}
+    rb_new = news;
+    Plane Surface(rb_new) = {rb_loops[rb_i]};
+    rb_s[] += rb_new;
+  EndFor
+  Transfinite Surface {rb_s[6]} = {rb_a[0], rb_o[0], rb_p[7], rb_p[6]};
+  Transfinite Surface {rb_s[7]} = {rb_o[0], rb_o[1], rb_p[8], rb_p[7]};
+  Transfinite Surface {rb_s[8]} = {rb_o[1], rb_a[1], rb_p[9], rb_p[8]};
+  Transfinite Surface {rb_s[9]} = {rb_b[0], rb_b[1], rb_o[1], rb_o[0]};
+  // The left corner's quads run clockwise in the (x, box_s z) frame, as
+  // extrusion along +y needs; the right corner's (its mirror image) and
+  // the strips' run the other way.
+  Reverse Surface {rb_s[{3:9}]};
+  Recombine Surface {rb_s[]};
+  // One surface at a time: the strips have five or six sides, so the
+  // lists Extrude returns for several surfaces have no fixed stride.
+  box_volumes[] = {};
+  For rb_i In {0:9}
+    rb_out[] = Extrude {0., box_s * box_dy, 0.} {
+      Surface{rb_s[rb_i]}; Layers{box_ny}; Recombine;
+    };
+    box_volumes[] += rb_out[1];
+  EndFor
+Return
+
 // Extruded: the tops and volumes of a list of extruded surfaces (Extrude
 // returns, for each surface, its top, its volume and its four sides).
 Macro Extruded
@@ -675,11 +845,17 @@ For k In {0:3}
   arc_s = metal_at_plate[k]; arc_R = metal_radius; arc_k = k; Call FindArc;
   grid_arc[] += arc; grid_rim[] += arc_start;
 EndFor
-grid_x[] = {-plate_half_width, plate_half_width, plate_end};
+// The last clamp_size of the plate, over the support, is its bolted area
+// (a block of its own, whose top is the plate clamp patch).
+grid_x[] = {-plate_half_width, plate_half_width, plate_end - clamp_size,
+            plate_end};
 grid_y[] = {-plate_half_width, plate_half_width};
-count_length = plate_end - plate_half_width; count_size = plate_size;
+count_length = plate_end - clamp_size - plate_half_width;
+count_size = plate_size;
 Call Count;
 grid_nx[] = {n_quarter, count};
+count_length = clamp_size; Call Count;
+grid_nx[] += count;
 grid_ny[] = {n_quarter};
 grid_ic = 0; grid_jc = 0; grid_z = plate_bottom + shift;
 // Radially 2 n: the ring's sides run from 15.5 (mid-side) to 34.1
@@ -694,6 +870,12 @@ Call Extruded;
 metal_volumes[] += ext_volume[{0:3}];
 plate_volumes[] = ext_volume[{4:#ext_volume[] - 1}];
 plate_top_faces[] = ext_top[{4:#ext_top[] - 1}];
+plate_clamp_face = -1;
+For i In {0:#plate_bottom_faces[] - 1}
+  If (plate_bottom_faces[i] == grid_block[2])
+    plate_clamp_face = plate_top_faces[i];
+  EndIf
+EndFor
 count_length = L - lip_height - plate_top; count_size = axial_size; Call Count;
 ext_out[] = Extrude {0., 0., L - lip_height - plate_top} {
   Surface{ext_top[{0:3}]}; Layers{count}; Recombine;
@@ -763,23 +945,38 @@ For c In {0:2}
 EndFor
 
 // ---------------------------------------------- stages 6, 7: support, weight
-// The support under the plate's far end, its top on the plate's bottom.
+// The support under the plate's far end, its top on the plate's bottom,
+// with its top's edges along y rounded (edge_radius).
 shift = 6 * stage_shift;
 box_x = plate_end - support_length; box_y = -plate_half_width;
-box_z = plate_bottom - support_height + shift;
 box_dx = support_length; box_dy = 2. * plate_half_width;
 box_dz = support_height;
 box_nx = 2 * n; box_ny = 3 * n; box_nz = n;
-Call MakeBlock;
-support_volume = box_volume;
-// The drop weight above the plate, weight_gap above its top.
+If (edge_radius > 0.)
+  box_z = plate_bottom + shift; box_s = -1;
+  box_r = edge_radius; box_m = edge_facets / 2; box_k = n;
+  Call RoundedBlock;
+  support_volumes[] = box_volumes[];
+Else
+  box_z = plate_bottom - support_height + shift;
+  Call MakeBlock;
+  support_volumes[] = {box_volume};
+EndIf
+// The drop weight above the plate, weight_gap above its top, with its
+// bottom's edges along y rounded (edge_radius).
 shift = 7 * stage_shift;
 box_x = weight_x; box_y = -weight_width / 2.;
 box_z = plate_top + weight_gap + shift;
 box_dx = weight_length; box_dy = weight_width; box_dz = weight_height;
 box_nx = 2 * n; box_ny = 2 * n; box_nz = n;
-Call MakeBlock;
-weight_volume = box_volume;
+If (edge_radius > 0.)
+  box_s = 1; box_r = edge_radius; box_m = edge_facets / 2; box_k = n;
+  Call RoundedBlock;
+  weight_volumes[] = box_volumes[];
+Else
+  Call MakeBlock;
+  weight_volumes[] = {box_volume};
+EndIf
 
 // ------------------------------------------- the parts back into place
 // Without AutoCoherence: touching parts keep nodes of their own.
@@ -793,8 +990,8 @@ Translate {0., 0., -4 * stage_shift} {
   Volume{metal_volumes[], plate_volumes[]};
 }
 Translate {0., 0., -5 * stage_shift} { Volume{brace_volumes[]}; }
-Translate {0., 0., -6 * stage_shift} { Volume{support_volume}; }
-Translate {0., 0., -7 * stage_shift} { Volume{weight_volume}; }
+Translate {0., 0., -6 * stage_shift} { Volume{support_volumes[]}; }
+Translate {0., 0., -7 * stage_shift} { Volume{weight_volumes[]}; }
 
 // ------------------------------------------------------- physical groups
 // FreeFaces: the faces of free_part[] (volumes) on the boundary of its
@@ -820,6 +1017,25 @@ Macro AtZ
   For face_i In {0:#free_faces[] - 1}
     face_box[] = BoundingBox Surface{free_faces[face_i]};
     If (Abs(face_box[2] - face_z) < eps && Abs(face_box[5] - face_z) < eps)
+      at_z[] += free_faces[face_i];
+    Else
+      not_at_z[] += free_faces[face_i];
+    EndIf
+  EndFor
+Return
+// A block's face at z = face_z with its rounded edges (RoundedBlock; the
+// block on the side of face_band = +-edge_radius): the faces that lie
+// within the band from face_z to face_z + face_band and are not vertical
+// (the profile's ends); output at_z[] and not_at_z[] as AtZ. With
+// face_band = 0, AtZ.
+Macro FaceWithEdges
+  at_z[] = {}; not_at_z[] = {};
+  face_lo = Min(face_z, face_z + face_band) - eps;
+  face_hi = Max(face_z, face_z + face_band) + eps;
+  For face_i In {0:#free_faces[] - 1}
+    face_box[] = BoundingBox Surface{free_faces[face_i]};
+    If (face_box[2] > face_lo && face_box[5] < face_hi &&
+        face_box[4] - face_box[1] > eps)
       at_z[] += free_faces[face_i];
     Else
       not_at_z[] += free_faces[face_i];
@@ -857,8 +1073,8 @@ Physical Volume("plastic outer sleeve", 6) = {plastic_volumes[]};
 Physical Volume("metal outer sleeve", 7) = {metal_volumes[]};
 Physical Volume("plate", 8) = {plate_volumes[]};
 Physical Volume("brace", 9) = {brace_volumes[]};
-Physical Volume("support", 10) = {support_volume};
-Physical Volume("drop weight", 11) = {weight_volume};
+Physical Volume("support", 10) = {support_volumes[]};
+Physical Volume("drop weight", 11) = {weight_volumes[]};
 
 // Bolt and nut.
 free_group[] = {bolt_volumes[], nut_volumes[]};
@@ -945,7 +1161,9 @@ Physical Surface("metal sleeve ends", 23) = {rest[]};
 free_part[] = plate_volumes[];
 Call FreeFaces;
 face_z = plate_top; Call AtZ;
-Physical Surface("plate top", 24) = {at_z[]};
+plate_top_free[] = at_z[];
+plate_top_free[] -= {plate_clamp_face};
+Physical Surface("plate top", 24) = {plate_top_free[]};
 free_faces[] = not_at_z[];
 face_z = plate_bottom; Call AtZ;
 Physical Surface("plate bottom", 25) = {at_z[]};
@@ -970,14 +1188,18 @@ Call Vertical;
 Physical Surface("brace hole wall", 32) = {inside[]};
 Physical Surface("brace rims", 33) = {outside[], rest[]};
 
-// Support and drop weight.
-free_group[] = {support_volume}; free_part[] = {support_volume};
+// Support and drop weight: the support's top and the drop weight's
+// bottom, with their rounded edges.
+free_group[] = support_volumes[]; free_part[] = support_volumes[];
 Call FreeFaces;
-face_z = plate_bottom; Call AtZ;
+face_z = plate_bottom; face_band = -edge_radius; Call FaceWithEdges;
 Physical Surface("support top", 34) = {at_z[]};
 Physical Surface("support other faces", 35) = {not_at_z[]};
-free_group[] = {weight_volume}; free_part[] = {weight_volume};
+free_group[] = weight_volumes[]; free_part[] = weight_volumes[];
 Call FreeFaces;
-face_z = plate_top + weight_gap; Call AtZ;
+face_z = plate_top + weight_gap; face_band = edge_radius;
+Call FaceWithEdges;
 Physical Surface("drop weight bottom", 36) = {at_z[]};
 Physical Surface("drop weight other faces", 37) = {not_at_z[]};
+// The plate's bolted end (last, so that ids 1 to 37 keep their order).
+Physical Surface("plate clamp", 38) = {plate_clamp_face};

@@ -7,7 +7,7 @@
 //   vertices (the minimum scaled Jacobian is printed: 1 for a brick, 0.71
 //   for the 45 degree corners of the O-grids);
 // - the eleven material ids, each part's cells and volume against the
-//   closed form of the meshed geometry; the 37 boundary ids, each one's
+//   closed form of the meshed geometry; the 38 boundary ids, each one's
 //   faces and area against its closed form. Round hulls are polygons of
 //   N = 24 n flat facets with their corners on the circles, N = 24 at
 //   every n for bolt and nut (bolt_quarter = 6; area of a disc of radius
@@ -70,6 +70,7 @@ namespace
     constexpr double clamp = 20., brace_square = 25.;
     constexpr double support_l = 40., support_h = 20.;
     constexpr double weight_l = 60., weight_w = 60., weight_h = 40.;
+    constexpr double edge_r = 10., edge_facets = 8.;
     constexpr double section_z = 30.;
   } // namespace dimension
 
@@ -138,6 +139,26 @@ namespace
     const auto Pb = [&](const double R) {
       return 2. * Nb * R * std::sin(pi / Nb);
     };
+    // The drop weight's and the support's blocks: a profile l x h in the
+    // xz-plane, two of its corners rounded with the radius edge_r by
+    // edge_facets facets each (a quarter of a polygon of 4 edge_facets),
+    // extruded over the width w. The rounded face: l - 2 edge_r flat plus
+    // the two arcs; the other faces: the far face, the two sides beyond
+    // the radius and the profile's two ends.
+    const double arc    = edge_facets * 2. * edge_r *
+                       std::sin(pi / (4. * edge_facets));
+    const double corner = edge_facets / 2. * edge_r * edge_r *
+                          std::sin(pi / (2. * edge_facets));
+    const auto profile  = [&](const double l, const double h) {
+      return l * h - 2. * edge_r * edge_r + 2. * corner;
+    };
+    const auto rounded_face = [&](const double l, const double w) {
+      return (l - 2. * edge_r + 2. * arc) * w;
+    };
+    const auto other_faces = [&](const double l, const double w,
+                                 const double h) {
+      return l * w + 2. * (h - edge_r) * w + 2. * profile(l, h);
+    };
     const double z_end  = -washer_t - nut_height - end_length;
     const double z_head = L + brace_t;
 
@@ -153,8 +174,8 @@ namespace
       {7, (A(metal) - A(plastic)) * (L - 2. * lip_h)},
       {8, (plate_w * plate_length - A(metal)) * plate_t},
       {9, (brace_x * brace_y - A(hole)) * brace_t},
-      {10, support_l * plate_w * support_h},
-      {11, weight_l * weight_w * weight_h}};
+      {10, profile(support_l, support_h) * plate_w},
+      {11, profile(weight_l, weight_h) * weight_w}};
     const double brace_face                    = brace_x * brace_y - A(hole);
     const double clamp_back                    = clamp * 2. * brace_square;
     const std::map<unsigned int, double> areas = {
@@ -181,7 +202,7 @@ namespace
       {21, P(plastic) * (L - 2. * lip_h)},
       {22, P(metal) * (L - 2. * lip_h - plate_t)},
       {23, 2. * (A(metal) - A(plastic))},
-      {24, plate_w * plate_length - A(metal)},
+      {24, plate_w * (plate_length - clamp) - A(metal)},
       {25, plate_w * plate_length - A(metal)},
       {26, 2. * (plate_w + plate_length) * plate_t},
       {27, brace_face},
@@ -191,10 +212,11 @@ namespace
       {31, clamp * clamp},
       {32, P(hole) * brace_t},
       {33, 2. * (brace_x + brace_y) * brace_t},
-      {34, support_l * plate_w},
-      {35, support_l * plate_w + 2. * (support_l + plate_w) * support_h},
-      {36, weight_l * weight_w},
-      {37, weight_l * weight_w + 2. * (weight_l + weight_w) * weight_h}};
+      {34, rounded_face(support_l, plate_w)},
+      {35, other_faces(support_l, plate_w, support_h)},
+      {36, rounded_face(weight_l, weight_w)},
+      {37, other_faces(weight_l, weight_w, weight_h)},
+      {38, clamp * plate_w}};
 
     Triangulation<3> tria;
     try

@@ -4,7 +4,7 @@
 # benchmarks/bushing.sh for bushing_variant.
 #
 # The shortened version of a test: the shipped file on the coarse mesh
-# (meshes/bushing_1.msh or bushing_1_plate4.msh, n = 1: 6874 cells), the
+# (meshes/bushing_1.msh or bushing_1_plate4.msh, n = 1: 7214 cells), the
 # preload in one load step of the whole pseudo-time (15 Newton iterations;
 # the shipped four quarter steps take 32 in all), 0.1 ms of impact, a
 # history row every 0.002 ms.
@@ -56,8 +56,7 @@ run_short() {
 #    section 'shank' in the same plane (bolt_axial_force) carries the same
 #    force to 1e-6 relative until the weight arrives (statics);
 #  - a quiet hand-off: before the weight touches the plate (the rows
-#    before the first with a weight_plate force; the preload lifts the
-#    plate, so it touches before 0.5 mm / V0) the deformable parts' kinetic
+#    before the first with a weight_plate force) the deformable parts' kinetic
 #    energy is below 1e-10 of their internal energy (the issue's bound is
 #    1e-3; measured: about 1e-22, round-off);
 #  - the energy error at most 2 % of the largest energy at every row;
