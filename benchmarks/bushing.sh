@@ -46,7 +46,7 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 b = s["ns_per_element_cycle_breakdown"]
 ns = s["ns_per_element_cycle"]
-print(f"  {s['cells']} cells, {s['dofs']} dofs, {s['ranks']} ranks, {s['time_steps']} steps to {s['end_time']:.4g} ms, {s['wall_seconds']:.1f} s")
+print(f"  {s['cells']} cells ({s['deformable_cells']} deformable), {s['dofs']} dofs, {s['ranks']} ranks, {s['time_steps']} steps to {s['end_time']:.4g} ms, {s['wall_seconds']:.1f} s")
 print(f"  {ns:.0f} ns per element-cycle (x ranks): element forces {b['element_forces']:.0f}, contact {b['contact']:.0f} ({100 * b['contact'] / ns:.1f} %), vector updates {b['vector_updates']:.0f}, communication {b['communication']:.0f}, output {b['output']:.0f}")
 print(f"  40 ms at this cost: {s['time_steps'] * 40 / s['end_time']:.0f} steps, {s['wall_seconds'] * 40 / s['end_time'] / 60:.0f} minutes")
 print(f"  energy error {100 * s['max_energy_error']:.3g} % of the largest energy; added mass fraction {s['added_mass_fraction']}")

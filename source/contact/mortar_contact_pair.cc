@@ -416,6 +416,9 @@ namespace rubberdyn
                   candidates.push_back(pass.master_facets[h]);
               std::sort(candidates.begin(), candidates.end());
             }
+          // Kept segments may miss a new candidate's.
+          for (Pass::KeptSegments &kept : pass.kept)
+            kept.valid = false;
         }
       x_at_search = x;
       searched    = true;
@@ -515,9 +518,38 @@ namespace rubberdyn
 
 
     bool
+    MortarContactPair::Implementation::kept_segments_hold(
+      const Pass::KeptSegments &kept,
+      const FacetCorners       &slave,
+      const Tensor<1, 3>       &n) const
+    {
+      Tensor<1, 3> mean;
+      for (unsigned int a = 0; a < 4; ++a)
+        mean += 0.25 * (slave[a] - kept.slave_corners[a]);
+      const double limit = definition.segment_reuse_slip;
+      // The motion of a corner along the plane, relative to the facet's.
+      const auto moved = [&](const Point<3> &now, const Point<3> &then) {
+        Tensor<1, 3> relative = (now - then) - mean;
+        relative -= (relative * n) * n;
+        return relative.norm_square() > limit * limit;
+      };
+      for (unsigned int a = 0; a < 4; ++a)
+        if (moved(slave[a], kept.slave_corners[a]))
+          return false;
+      for (const Pass::KeptSegment &k : kept.segments)
+        for (unsigned int b = 0; b < 4; ++b)
+          if (moved(x[facet_nodes[k.master][b]], k.master_corners[b]))
+            return false;
+      return true;
+    }
+
+
+
+    bool
     MortarContactPair::Implementation::integrate(Pass      &pass,
                                                  const bool keep_all,
-                                                 const bool skip_open)
+                                                 const bool skip_open,
+                                                 const bool reuse)
     {
       for (const unsigned int node : pass.nodes)
         {
@@ -540,6 +572,30 @@ namespace rubberdyn
         }
       if (skip_open)
         mark_open_nodes(pass);
+      if (reuse)
+        pass.kept.resize(pass.gap_facets.size());
+      // A segment's share of its slave nodes' sums (weighted[a]: its
+      // weighted gap vectors at the current positions).
+      const auto add_segment = [&](const unsigned int         i,
+                                   const unsigned int         m,
+                                   const MortarSegment       &segment,
+                                   const Tensor<1, 3> (&weighted)[4]) {
+        const auto &s  = facet_nodes[pass.gap_facets[i]];
+        const auto &mc = facet_nodes[m];
+        for (unsigned int a = 0; a < 4; ++a)
+          {
+            for (unsigned int b = 0; b < 4; ++b)
+              area[s[a]] += segment.D[a][b];
+            gap[s[a]] += weighted[a];
+          }
+        if (coulomb)
+          for (unsigned int a = 0; a < 4; ++a)
+            for (unsigned int b = 0; b < 4; ++b)
+              slip[s[a]] += segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
+                            segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]);
+        if (keep_all || owns(pass, i))
+          pass.segments.push_back({i, m, segment});
+      };
       bool          skipped = false;
       MortarSegment segment;
       Tensor<1, 3>  weighted[4];
@@ -555,6 +611,44 @@ namespace rubberdyn
           for (unsigned int a = 0; a < 4; ++a)
             slave_corners[a] = x[s[a]];
           const MortarSlaveFacet &slave_facet = slave_facets[i];
+          if (reuse)
+            {
+              Pass::KeptSegments &kept = pass.kept[i];
+              // The kept integrals at the current positions, each within
+              // the capture margin as a new one must be (within_margin()).
+              bool hold = kept.valid &&
+                          kept_segments_hold(kept,
+                                             slave_corners,
+                                             slave_facet.unit_normal());
+              for (unsigned int k = 0; hold && k < kept.segments.size(); ++k)
+                {
+                  const auto &mc = facet_nodes[kept.segments[k].master];
+                  for (unsigned int c = 0; c < 4; ++c)
+                    master_corners[c] = x[mc[c]];
+                  hold = within_margin(slave_corners,
+                                       master_corners,
+                                       kept.segments[k].integrals,
+                                       weighted);
+                }
+              if (hold)
+                {
+                  for (const Pass::KeptSegment &k : kept.segments)
+                    {
+                      const auto &mc = facet_nodes[k.master];
+                      for (unsigned int c = 0; c < 4; ++c)
+                        master_corners[c] = x[mc[c]];
+                      within_margin(slave_corners,
+                                    master_corners,
+                                    k.integrals,
+                                    weighted);
+                      add_segment(i, k.master, k.integrals, weighted);
+                    }
+                  continue;
+                }
+              kept.valid         = true;
+              kept.slave_corners = slave_corners;
+              kept.segments.clear();
+            }
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
@@ -566,20 +660,9 @@ namespace rubberdyn
                                  segment,
                                  weighted))
                 continue;
-              for (unsigned int a = 0; a < 4; ++a)
-                {
-                  for (unsigned int b = 0; b < 4; ++b)
-                    area[s[a]] += segment.D[a][b];
-                  gap[s[a]] += weighted[a];
-                }
-              if (coulomb)
-                for (unsigned int a = 0; a < 4; ++a)
-                  for (unsigned int b = 0; b < 4; ++b)
-                    slip[s[a]] +=
-                      segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
-                      segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]);
-              if (keep_all || owns(pass, i))
-                pass.segments.push_back({i, m, segment});
+              add_segment(i, m, segment, weighted);
+              if (reuse)
+                pass.kept[i].segments.push_back({m, segment, master_corners});
             }
         }
       return skipped;
@@ -605,6 +688,110 @@ namespace rubberdyn
       gap           = gap_kept;
       slip          = slip_kept;
       pass.segments = segments_kept;
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::save_kept_segments(
+      std::ostream &out) const
+    {
+      std::vector<double> data = {double(searched)};
+      for (const Point<3> &p : x_at_search)
+        data.insert(data.end(), {p[0], p[1], p[2]});
+      const auto add_corners = [&data](const FacetCorners &corners) {
+        for (const Point<3> &p : corners)
+          data.insert(data.end(), {p[0], p[1], p[2]});
+      };
+      for (const Pass &pass : passes)
+        {
+          data.push_back(pass.candidates.size());
+          for (const std::vector<unsigned int> &candidates : pass.candidates)
+            {
+              data.push_back(candidates.size());
+              data.insert(data.end(), candidates.begin(), candidates.end());
+            }
+          data.push_back(pass.kept.size());
+          for (const Pass::KeptSegments &kept : pass.kept)
+            {
+              data.push_back(kept.valid);
+              add_corners(kept.slave_corners);
+              data.push_back(kept.segments.size());
+              for (const Pass::KeptSegment &k : kept.segments)
+                {
+                  data.push_back(k.master);
+                  data.insert(data.end(),
+                              &k.integrals.D[0][0],
+                              &k.integrals.D[0][0] + 16);
+                  data.insert(data.end(),
+                              &k.integrals.M[0][0],
+                              &k.integrals.M[0][0] + 16);
+                  data.push_back(k.integrals.area);
+                  add_corners(k.master_corners);
+                }
+            }
+        }
+      const double size = data.size();
+      binary_io::write_doubles(out, &size, 1);
+      binary_io::write_doubles(out, data.data(), data.size());
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::load_kept_segments(std::istream &in)
+    {
+      double size = 0.;
+      binary_io::read_doubles(in, &size, 1, "contact pair kept segments");
+      std::vector<double> data(static_cast<std::size_t>(size));
+      binary_io::read_doubles(in,
+                              data.data(),
+                              data.size(),
+                              "contact pair kept segments");
+      const double *value = data.data();
+      const auto    next  = [&]() { return *value++; };
+      const auto    corners = [&](FacetCorners &c) {
+        for (Point<3> &p : c)
+          for (unsigned int d = 0; d < 3; ++d)
+            p[d] = next();
+      };
+      searched = next() != 0.;
+      x_at_search.resize(x.size());
+      for (Point<3> &p : x_at_search)
+        for (unsigned int d = 0; d < 3; ++d)
+          p[d] = next();
+      for (Pass &pass : passes)
+        {
+          pass.candidates.resize(static_cast<std::size_t>(next()));
+          for (std::vector<unsigned int> &candidates : pass.candidates)
+            {
+              candidates.resize(static_cast<std::size_t>(next()));
+              for (unsigned int &m : candidates)
+                m = static_cast<unsigned int>(next());
+            }
+          pass.kept.resize(static_cast<std::size_t>(next()));
+          for (Pass::KeptSegments &kept : pass.kept)
+            {
+              kept.valid = next() != 0.;
+              corners(kept.slave_corners);
+              kept.segments.resize(static_cast<std::size_t>(next()));
+              for (Pass::KeptSegment &k : kept.segments)
+                {
+                  k.master = static_cast<unsigned int>(next());
+                  for (unsigned int a = 0; a < 4; ++a)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      k.integrals.D[a][b] = next();
+                  for (unsigned int a = 0; a < 4; ++a)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      k.integrals.M[a][b] = next();
+                  k.integrals.area = next();
+                  corners(k.master_corners);
+                }
+            }
+        }
+      AssertThrow(value == data.data() + data.size(),
+                  ExcMessage("The kept segments of the contact pair '" +
+                             definition.name + "' do not fit it"));
     }
 
 
@@ -808,7 +995,14 @@ namespace rubberdyn
           else
             {
               I.compute_normals(pass);
-              I.shown_gaps_partial |= I.integrate(pass, false, true);
+              // Segments are kept only in explicit runs (the masses known):
+              // the quasi-static residual must be the tangent's.
+              I.shown_gaps_partial |=
+                I.integrate(pass,
+                            false,
+                            true,
+                            I.definition.segment_reuse_slip > 0. &&
+                              !I.node_mass.empty());
               const model::ContactPairDefinition &def = I.definition;
               const double step = point.time - I.time_accepted;
               const bool   book = pass.accepted_penalty >= 0.;
@@ -1077,6 +1271,8 @@ namespace rubberdyn
       binary_io::write_doubles(out,
                                I.audit.f_accepted.data(),
                                I.audit.f_accepted.size());
+      if (I.definition.segment_reuse_slip > 0.)
+        I.save_kept_segments(out);
       if (!I.coulomb || I.x.empty())
         return;
       // Friction's history: the accepted tractions and spring energies,
@@ -1209,8 +1405,11 @@ namespace rubberdyn
                               "contact pair audit forces");
       I.trial_stiffness_energy = 0.;
       // The candidates are found anew from the loaded positions (the
-      // segments do not depend on which extra candidates a search keeps).
+      // segments do not depend on which extra candidates a search keeps),
+      // but for kept segments, which depend on when the searches were.
       I.searched = false;
+      if (I.definition.segment_reuse_slip > 0.)
+        I.load_kept_segments(in);
       if (!I.coulomb || I.x.empty())
         return;
       for (Implementation::Pass &pass : I.passes)

@@ -164,6 +164,26 @@ namespace rubberdyn
         /** By node index, of the last evaluation: pressure (GPa) and mean
          * gap (mm, 0 where nothing is covered), for ParaView. */
         std::vector<double> shown_pressure, shown_gap;
+
+        /** A segment kept for reuse: its master facet, the integrals and
+         * the master facet's corners when they were integrated. */
+        struct KeptSegment
+        {
+          unsigned int  master;
+          MortarSegment integrals;
+          FacetCorners  master_corners;
+        };
+        /** A gap facet's segments kept for reuse (Segment reuse slip), with
+         * its corners when they were integrated. */
+        struct KeptSegments
+        {
+          bool                     valid = false;
+          FacetCorners             slave_corners;
+          std::vector<KeptSegment> segments;
+        };
+        /** By gap facet: the kept segments (explicit runs with reuse; all
+         * invalid after a search). */
+        std::vector<KeptSegments> kept;
       };
 
       Implementation(const model::Model                 &model,
@@ -208,7 +228,29 @@ namespace rubberdyn
        * @return Whether a facet was left out.
        */
       bool
-      integrate(Pass &pass, const bool keep_all, const bool skip_open = false);
+      integrate(Pass      &pass,
+                const bool keep_all,
+                const bool skip_open = false,
+                const bool reuse     = false);
+
+      /**
+       * Whether the kept segments of a gap facet still hold (integrate()
+       * with reuse): no corner of the facet, now at @p slave, nor of the
+       * kept segments' master facets has moved along the facet's plane
+       * (unit normal @p n), relative to the facet's mean motion, by more
+       * than the pair's Segment reuse slip since they were integrated.
+       */
+      bool
+      kept_segments_hold(const Pass::KeptSegments &kept,
+                         const FacetCorners       &slave,
+                         const Tensor<1, 3>       &n) const;
+
+      /** The search's state and the kept segments, for an exact restart
+       * with segment reuse (save(), load()). */
+      void
+      save_kept_segments(std::ostream &out) const;
+      void
+      load_kept_segments(std::istream &in);
 
       /**
        * Mark in open_node (by node index) the nodes of @p pass that are

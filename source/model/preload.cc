@@ -37,7 +37,8 @@ namespace rubberdyn
                                             "Minimum time step",
                                             "Mass scaling time step",
                                             "Bulk viscosity linear",
-                                            "Bulk viscosity quadratic"};
+                                            "Bulk viscosity quadratic",
+                                            "Segment reuse slip"};
         // "set <name> = <value>", the name padded to a common width.
         const auto equals = line.find('=');
         if (line.rfind("set ", 0) != 0 || equals == std::string::npos)

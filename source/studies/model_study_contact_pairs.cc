@@ -94,6 +94,21 @@ namespace rubberdyn
                               Patterns::Double(),
                               "Tied pairs: the largest initial normal gap "
                               "of a slave node that is tied (mm, >= 0).");
+            prm.declare_entry(
+              "Segment reuse slip",
+              "0",
+              Patterns::Double(),
+              "Explicit runs, frictionless and Coulomb pairs: a slave facet "
+              "keeps the mortar segments (the overlap integrals) of its last "
+              "integration while no corner of it or of the master facets it "
+              "overlaps has moved along the facet's plane, relative to the "
+              "facet's mean motion since then, by more than this (mm, >= 0); "
+              "the gaps and slips are still those of the current positions "
+              "(the integrals are held, as in a tied pair). A search, which "
+              "comes with every motion of a quarter of the capture margin, "
+              "integrates all anew. 0: every step. A clamped interface that "
+              "barely slides costs a fraction; its error is of the order of "
+              "this distance over the facets' size, relative.");
             prm.leave_subsection();
           }
         prm.leave_subsection();
@@ -158,6 +173,8 @@ namespace rubberdyn
                                               path + "/Penalty scale");
             pair.two_pass      = prm.get_bool("Two-pass");
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
+            pair.segment_reuse_slip =
+              non_negative("Segment reuse slip", " mm");
             std::vector<types::boundary_id> shared;
             std::set_intersection(pair.slave_boundary_ids.begin(),
                                   pair.slave_boundary_ids.end(),

@@ -9,28 +9,36 @@
 # tangential tractions, spring energies and slip distances, the accepted
 # positions and time, the friction work and the last evaluation's columns;
 # the restarted run searches anew, which does not change any segment:
-# doc/theory.md, section 15.2.)
+# doc/theory.md, section 15.2.) The same again with the pair's Segment
+# reuse slip = 0.01 mm, where the segments depend on when the searches
+# were: the checkpoint then holds the search's state and the kept
+# segments, and the histories are again identical byte for byte.
 # Usage: contact_pair_restart.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
 source "$source_dir/tests/model/script_helpers.sh"
-rm -rf full part ./*.prm ./*.log
+rm -rf full* part* ./*.prm ./*.log
 ln -sfn "$source_dir/parameter_files/meshes" meshes
-make_prm() { # name directory restart
+make_prm() { # name directory restart reuse
   sed -e "s|output/block_sliding_on_plate|$2|" \
       -e "s|set End time *=.*|set End time = 3.5|" \
       -e "s|^\(  set History output interval.*\)$|\1\n  set Checkpoint interval = 1.3\n  set Restart from checkpoint = $3|" \
       -e "s|set Field output interval *=.*|set Field output interval = 0|" \
+      -e "s|^\(    set Dynamic friction coefficient.*\)$|\1\n    set Segment reuse slip = $4|" \
       "$source_dir/parameter_files/block_sliding_on_plate.prm" > "$1.prm"
+  grep -q "Segment reuse slip = $4" "$1.prm" ||
+    { echo "$1.prm: no Segment reuse slip"; exit 1; }
 }
-make_prm full full false
-make_prm part part false
-make_prm resume part true
-crash_and_restart full part resume 3.0 2.6
-awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
-  $c["time"] > 2.6 && $c["sliding_slipping_nodes"] > 0 { slipping = 1 }
-  END { exit !slipping }' full/time_history.csv ||
-  { echo "the block does not slide after 2.6 ms"; exit 1; }
-cmp full/time_history.csv part/time_history.csv ||
-  { echo "the restarted run differs from the uninterrupted one"; exit 1; }
-echo "killed at 3.0 ms while sliding, restarted from 2.6 ms: time_history.csv identical ($(wc -l < full/time_history.csv) lines)"
+for reuse in 0 0.01; do
+  make_prm "full_$reuse" "full_$reuse" false "$reuse"
+  make_prm "part_$reuse" "part_$reuse" false "$reuse"
+  make_prm "resume_$reuse" "part_$reuse" true "$reuse"
+  crash_and_restart "full_$reuse" "part_$reuse" "resume_$reuse" 3.0 2.6
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    $c["time"] > 2.6 && $c["sliding_slipping_nodes"] > 0 { slipping = 1 }
+    END { exit !slipping }' "full_$reuse/time_history.csv" ||
+    { echo "reuse $reuse: the block does not slide after 2.6 ms"; exit 1; }
+  cmp "full_$reuse/time_history.csv" "part_$reuse/time_history.csv" ||
+    { echo "reuse $reuse: the restarted run differs from the uninterrupted one"; exit 1; }
+  echo "Segment reuse slip $reuse: killed at 3.0 ms while sliding, restarted from 2.6 ms: time_history.csv identical ($(wc -l < "full_$reuse/time_history.csv") lines)"
+done

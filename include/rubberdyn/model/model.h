@@ -176,6 +176,12 @@ namespace rubberdyn
       bool two_pass = false;
       /** Tied: the largest initial gap that is tied (mm). */
       double tie_tolerance = 0.;
+      /**
+       * Explicit runs: how far the surfaces may move along a slave facet,
+       * relative to the facet, before its mortar segments are integrated
+       * anew (mm); 0: every evaluation (contact::MortarContactPair).
+       */
+      double segment_reuse_slip = 0.;
     };
 
     /**
