@@ -620,6 +620,7 @@ namespace rubberdyn
                           kept_segments_hold(kept,
                                              slave_corners,
                                              slave_facet.unit_normal());
+              kept_weighted.resize(kept.segments.size());
               for (unsigned int k = 0; hold && k < kept.segments.size(); ++k)
                 {
                   const auto &mc = facet_nodes[kept.segments[k].master];
@@ -628,21 +629,15 @@ namespace rubberdyn
                   hold = within_margin(slave_corners,
                                        master_corners,
                                        kept.segments[k].integrals,
-                                       weighted);
+                                       kept_weighted[k].vectors);
                 }
               if (hold)
                 {
-                  for (const Pass::KeptSegment &k : kept.segments)
-                    {
-                      const auto &mc = facet_nodes[k.master];
-                      for (unsigned int c = 0; c < 4; ++c)
-                        master_corners[c] = x[mc[c]];
-                      within_margin(slave_corners,
-                                    master_corners,
-                                    k.integrals,
-                                    weighted);
-                      add_segment(i, k.master, k.integrals, weighted);
-                    }
+                  for (unsigned int k = 0; k < kept.segments.size(); ++k)
+                    add_segment(i,
+                                kept.segments[k].master,
+                                kept.segments[k].integrals,
+                                kept_weighted[k].vectors);
                   continue;
                 }
               kept.valid         = true;

@@ -486,6 +486,14 @@ namespace rubberdyn
        * segments (capacity kept between evaluations). */
       std::vector<MortarSlaveFacet> slave_facets;
 
+      /** Scratch of integrate() with reuse: a facet's kept segments'
+       * weighted gap vectors (capacity kept between evaluations). */
+      struct WeightedGaps
+      {
+        Tensor<1, 3> vectors[4];
+      };
+      std::vector<WeightedGaps> kept_weighted;
+
       /** Whether the last evaluation left facets out (integrate()), so
        * that the shown gaps of open nodes need refresh_shown_gaps(). */
       bool shown_gaps_partial = false;

@@ -175,6 +175,12 @@ namespace rubberdyn
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
             pair.segment_reuse_slip =
               non_negative("Segment reuse slip", " mm");
+            if (pair.segment_reuse_slip > 0. &&
+                pair.type == Definition::Type::tied)
+              throw InputError(path + "/Segment reuse slip",
+                               "is for frictionless and Coulomb pairs; a "
+                               "tied pair's segments are those of the "
+                               "reference configuration already (set 0)");
             std::vector<types::boundary_id> shared;
             std::set_intersection(pair.slave_boundary_ids.begin(),
                                   pair.slave_boundary_ids.end(),
