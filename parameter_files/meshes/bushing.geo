@@ -1010,24 +1010,11 @@ Macro FreeFaces
     free_faces[] -= free_interface[];
   EndIf
 Return
-// Horizontal faces at z = face_z and the others, from free_faces[]:
-// output at_z[] and not_at_z[].
-Macro AtZ
-  at_z[] = {}; not_at_z[] = {};
-  For face_i In {0:#free_faces[] - 1}
-    face_box[] = BoundingBox Surface{free_faces[face_i]};
-    If (Abs(face_box[2] - face_z) < eps && Abs(face_box[5] - face_z) < eps)
-      at_z[] += free_faces[face_i];
-    Else
-      not_at_z[] += free_faces[face_i];
-    EndIf
-  EndFor
-Return
 // A block's face at z = face_z with its rounded edges (RoundedBlock; the
-// block on the side of face_band = +-edge_radius): the faces that lie
-// within the band from face_z to face_z + face_band and are not vertical
-// (the profile's ends); output at_z[] and not_at_z[] as AtZ. With
-// face_band = 0, AtZ.
+// block on the side of face_band = +-edge_radius): the faces, from
+// free_faces[], that lie within the band from face_z to face_z +
+// face_band and are not vertical (the profile's ends); output at_z[] and
+// not_at_z[].
 Macro FaceWithEdges
   at_z[] = {}; not_at_z[] = {};
   face_lo = Min(face_z, face_z + face_band) - eps;
@@ -1041,6 +1028,12 @@ Macro FaceWithEdges
       not_at_z[] += free_faces[face_i];
     EndIf
   EndFor
+Return
+// Horizontal faces at z = face_z and the others, from free_faces[]:
+// output at_z[] and not_at_z[] (FaceWithEdges with no band).
+Macro AtZ
+  face_band = 0.;
+  Call FaceWithEdges;
 Return
 // Vertical faces within z_lo <= z <= z_hi and farthest from the axis
 // (bounding box) below / above face_r: output inside[], outside[];

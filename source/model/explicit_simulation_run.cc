@@ -569,13 +569,8 @@ namespace rubberdyn
       // The cells whose forces the elements compute: a rigid part's cells
       // only give its mass (the bushing's rounded drop weight and support
       // have 1200 at its default mesh).
-      unsigned int deformable_cells = 0;
-      for (const auto &cell : model.triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            !model.parts[model.part_of_material_id(cell->material_id())]
-               .rigid)
-          ++deformable_cells;
-      deformable_cells = Utilities::MPI::sum(deformable_cells, comm);
+      const unsigned int deformable_cells =
+        Utilities::MPI::sum(elements->n_elements(), comm);
       const double element_cycles = double(deformable_cells) * s.step();
       time_integration::StepTimings timings = s.timings();
       for (double *t : {&timings.element_forces, &timings.contact,
