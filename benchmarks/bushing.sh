@@ -9,8 +9,8 @@
 #
 # Usage: bushing.sh EXECUTABLE SOURCE_DIR [NPROC [MESH_N [IMPACT [STEPS]]]]
 #   NPROC   MPI ranks (default 2)
-#   MESH_N  mesh density n: 2 (meshes/bushing.msh, 28 224 cells; default) or
-#           1 (meshes/bushing_1.msh, 7214 cells)
+#   MESH_N  mesh density n: 2 (meshes/bushing.msh, 28 680 cells; default) or
+#           1 (meshes/bushing_1.msh, 7394 cells)
 #   IMPACT  ms of the explicit run (default 0.5)
 #   STEPS   load steps of the preload: 4 (the shipped quarter steps) or 1
 #           (the whole pseudo-time at once, as the shortened ctests;

@@ -62,11 +62,11 @@ namespace
   {
     constexpr double bolt = 8., hole = 8.5, head = 12., head_height = 10.;
     constexpr double end_length = 6., nut = 15., nut_height = 14.;
-    constexpr double washer = 30., washer_t = 4.;
+    constexpr double washer = 36., washer_t = 4.;
     constexpr double inner = 14., L = 60., rubber = 25., lip = 32.5;
     constexpr double lip_h = 6., plastic = 27.5, metal = 29.5;
     constexpr double plate_t = 5., plate_w = 90., plate_length = 345.;
-    constexpr double brace_t = 4., brace_x = 135., brace_y = 170.;
+    constexpr double brace_t = 8., brace_x = 135., brace_y = 170.;
     constexpr double clamp = 20., brace_square = 25.;
     constexpr double support_l = 40., support_h = 20.;
     constexpr double weight_l = 60., weight_w = 60., weight_h = 40.;

@@ -4,9 +4,9 @@
 # benchmarks/bushing.sh for bushing_variant.
 #
 # The shortened version of a test: the shipped file on the coarse mesh
-# (meshes/bushing_1.msh or bushing_1_plate4.msh, n = 1: 7214 cells), the
-# preload in one load step of the whole pseudo-time (15 Newton iterations;
-# the shipped four quarter steps take 32 in all), 0.1 ms of impact, a
+# (meshes/bushing_1.msh or bushing_1_plate4.msh, n = 1: 7394 cells), the
+# preload in one load step of the whole pseudo-time (10 Newton iterations;
+# the shipped four quarter steps take 28 in all), 0.1 ms of impact, a
 # history row every 0.002 ms.
 
 # bushing_variant N MESH_N END STEP DIRECTORY [HISTORY_INTERVAL]: writes
