@@ -185,10 +185,10 @@ DefineConstant[ plate_z = inner_sleeve_length / 2. ];
 DefineConstant[ plate_half_width = 45. ];
 DefineConstant[ plate_end = 300. ];
 // Brace: a steel bracket 8 thick above the bushing (a 4 mm sheet folded
-// under the head by 20 mm in 6 ms of test 4, doc/bushing.md "The rig"), reaching
-// x = -brace_back and y = +-brace_half_width; the O-grid square around the
-// hole has the half-width brace_square; the clamped (bolted) areas are
-// clamp_size wide, as is the plate's bolted end on the support.
+// under the head by 22 mm in 6 ms of test 4, doc/bushing.md "The rig"),
+// reaching x = -brace_back and y = +-brace_half_width; the O-grid square
+// around the hole has the half-width brace_square; the clamped (bolted)
+// areas are clamp_size wide, as is the plate's bolted end on the support.
 DefineConstant[ brace_thickness = 8. ];
 DefineConstant[ brace_square = 25. ];
 DefineConstant[ brace_back = 90. ];
