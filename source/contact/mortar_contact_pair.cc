@@ -12,6 +12,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <iterator>
 #include <map>
 #include <tuple>
@@ -34,6 +35,8 @@ namespace rubberdyn
     {
       AssertThrow(!model.uses_mixed_up(),
                   ExcMessage("mortar contact pairs need the Q1 dofs"));
+      if (const char *traced = std::getenv("RUBBERDYN_PAIR_TRACE"))
+        trace.enabled = definition.name == traced;
       // This rank's facets, then all of them, in an order that does not
       // depend on the partition (by their centres).
       std::vector<GatheredFacet>           own;
@@ -445,26 +448,26 @@ namespace rubberdyn
 
 
 
-    bool
-    MortarContactPair::Implementation::within_margin(
+    double
+    MortarContactPair::Implementation::margin_weight(
       const FacetCorners  &slave,
       const FacetCorners  &master,
       const MortarSegment &segment,
-      Tensor<1, 3> (&weighted)[4]) const
+      Tensor<1, 3> (&weighted)[4],
+      Tensor<1, 3> &weight_gradient) const
     {
-      Tensor<1, 3> facet_normal =
-        cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
-      facet_normal /= facet_normal.norm();
-      Tensor<1, 3> total;
       for (unsigned int a = 0; a < 4; ++a)
         {
           weighted[a] = Tensor<1, 3>();
           for (unsigned int b = 0; b < 4; ++b)
             weighted[a] +=
               segment.D[a][b] * slave[b] - segment.M[a][b] * master[b];
-          total += weighted[a];
         }
-      return !(std::abs(facet_normal * total) > margin * segment.area);
+      return mortar_segment_weight(slave,
+                                   segment,
+                                   weighted,
+                                   margin,
+                                   weight_gradient);
     }
 
 
@@ -545,6 +548,51 @@ namespace rubberdyn
 
 
 
+    void
+    MortarContactPair::Implementation::weight_forces(
+      const Pass          &pass,
+      const StoredSegment &s,
+      Tensor<1, 3> (&on_slave)[4],
+      Tensor<1, 3> (&on_master)[4]) const
+    {
+      const auto &sn = facet_nodes[pass.gap_facets[s.slave]];
+      const auto &mn = facet_nodes[s.master];
+      // -dE/dw, E = sum_a p_a^2 A_a / 2 eps over the segment's active
+      // nodes: with G_a = w G_as + ..., A_a = w A_as + ... and the gap
+      // g_a = -n . G_a / A_a, dE_a/dw = p_a (n . G_as + g_a A_as / 2).
+      double minus_dE_dw = 0.;
+      for (unsigned int a = 0; a < 4; ++a)
+        {
+          const unsigned int node = sn[a];
+          const double       g    = pass.shown_gap[node];
+          if (!(area[node] > 0.) || !(g < 0.))
+            continue;
+          const double p        = -pass.penalty * g;
+          double       row_area = 0.;
+          Tensor<1, 3> row_gap;
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              row_area += s.integrals.D[a][b];
+              row_gap +=
+                s.integrals.D[a][b] * x[sn[b]] - s.integrals.M[a][b] * x[mn[b]];
+            }
+          minus_dE_dw -= p * (normal[node] * row_gap + 0.5 * g * row_area);
+        }
+      for (unsigned int b = 0; b < 4; ++b)
+        {
+          double column_D = 0., column_M = 0.;
+          for (unsigned int a = 0; a < 4; ++a)
+            {
+              column_D += s.integrals.D[a][b];
+              column_M += s.integrals.M[a][b];
+            }
+          on_slave[b]  = (minus_dE_dw * column_D) * s.weight_gradient;
+          on_master[b] = (-minus_dE_dw * column_M) * s.weight_gradient;
+        }
+    }
+
+
+
     bool
     MortarContactPair::Implementation::integrate(Pass      &pass,
                                                  const bool keep_all,
@@ -576,29 +624,32 @@ namespace rubberdyn
         pass.kept.resize(pass.gap_facets.size());
       // A segment's share of its slave nodes' sums (weighted[a]: its
       // weighted gap vectors at the current positions).
-      const auto add_segment = [&](const unsigned int         i,
-                                   const unsigned int         m,
-                                   const MortarSegment       &segment,
-                                   const Tensor<1, 3> (&weighted)[4]) {
+      const auto add_segment = [&](const unsigned int   i,
+                                   const unsigned int   m,
+                                   const MortarSegment &segment,
+                                   const Tensor<1, 3>(&weighted)[4],
+                                   const double        w,
+                                   const Tensor<1, 3> &weight_gradient) {
         const auto &s  = facet_nodes[pass.gap_facets[i]];
         const auto &mc = facet_nodes[m];
         for (unsigned int a = 0; a < 4; ++a)
           {
             for (unsigned int b = 0; b < 4; ++b)
-              area[s[a]] += segment.D[a][b];
-            gap[s[a]] += weighted[a];
+              area[s[a]] += w * segment.D[a][b];
+            gap[s[a]] += w * weighted[a];
           }
         if (coulomb)
           for (unsigned int a = 0; a < 4; ++a)
             for (unsigned int b = 0; b < 4; ++b)
-              slip[s[a]] += segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
-                            segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]);
+              slip[s[a]] +=
+                w * (segment.D[a][b] * (x[s[b]] - x_accepted[s[b]]) -
+                     segment.M[a][b] * (x[mc[b]] - x_accepted[mc[b]]));
         if (keep_all || owns(pass, i))
-          pass.segments.push_back({i, m, segment});
+          pass.segments.push_back({i, m, segment, w, weight_gradient});
       };
       bool          skipped = false;
       MortarSegment segment;
-      Tensor<1, 3>  weighted[4];
+      Tensor<1, 3>  weighted[4], weight_gradient;
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
           const auto &s = facet_nodes[pass.gap_facets[i]];
@@ -615,7 +666,7 @@ namespace rubberdyn
             {
               Pass::KeptSegments &kept = pass.kept[i];
               // The kept integrals at the current positions, each within
-              // the capture margin as a new one must be (within_margin()).
+              // the capture margin as a new one must be (margin_weight()).
               bool hold = kept.valid &&
                           kept_segments_hold(kept,
                                              slave_corners,
@@ -626,10 +677,13 @@ namespace rubberdyn
                   const auto &mc = facet_nodes[kept.segments[k].master];
                   for (unsigned int c = 0; c < 4; ++c)
                     master_corners[c] = x[mc[c]];
-                  hold = within_margin(slave_corners,
-                                       master_corners,
-                                       kept.segments[k].integrals,
-                                       kept_weighted[k].vectors);
+                  kept_weighted[k].weight =
+                    margin_weight(slave_corners,
+                                  master_corners,
+                                  kept.segments[k].integrals,
+                                  kept_weighted[k].vectors,
+                                  kept_weighted[k].gradient);
+                  hold = kept_weighted[k].weight > 0.;
                 }
               if (hold)
                 {
@@ -637,7 +691,9 @@ namespace rubberdyn
                     add_segment(i,
                                 kept.segments[k].master,
                                 kept.segments[k].integrals,
-                                kept_weighted[k].vectors);
+                                kept_weighted[k].vectors,
+                                kept_weighted[k].weight,
+                                kept_weighted[k].gradient);
                   continue;
                 }
               kept.valid         = true;
@@ -649,13 +705,16 @@ namespace rubberdyn
               const auto &mc = facet_nodes[m];
               for (unsigned int k = 0; k < 4; ++k)
                 master_corners[k] = x[mc[k]];
-              if (!slave_facet.integrate(master_corners, segment) ||
-                  !within_margin(slave_corners,
-                                 master_corners,
-                                 segment,
-                                 weighted))
+              if (!slave_facet.integrate(master_corners, segment))
                 continue;
-              add_segment(i, m, segment, weighted);
+              const double w = margin_weight(slave_corners,
+                                             master_corners,
+                                             segment,
+                                             weighted,
+                                             weight_gradient);
+              if (!(w > 0.))
+                continue;
+              add_segment(i, m, segment, weighted, w, weight_gradient);
               if (reuse)
                 pass.kept[i].segments.push_back({m, segment, master_corners});
             }
@@ -1090,17 +1149,21 @@ namespace rubberdyn
                 }
             }
 
-          // The forces of this rank's segments: D t on the slave side, -M t
-          // on the master side.
+          // The forces of this rank's segments: w D t on the slave side,
+          // -w M t on the master side, and where the weight w is below 1
+          // the springs' share of its gradient (weight_forces()).
           for (const StoredSegment &s : pass.segments)
             {
               if (!I.owns(pass, s.slave))
                 continue;
               const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
               const auto &mn = I.facet_nodes[s.master];
+              Tensor<1, 3> extra_slave[4], extra_master[4];
+              if (!tied && s.weight_gradient.norm_square() > 0.)
+                I.weight_forces(pass, s, extra_slave, extra_master);
               for (unsigned int a = 0; a < 4; ++a)
                 {
-                  const Tensor<1, 3> &t = I.traction[sn[a]];
+                  const Tensor<1, 3> t = s.weight * I.traction[sn[a]];
                   if (t.norm_square() == 0.)
                     continue;
                   for (unsigned int b = 0; b < 4; ++b)
@@ -1114,6 +1177,15 @@ namespace rubberdyn
                           s.integrals.M[a][b] * t[d];
                       }
                 }
+              for (unsigned int b = 0; b < 4; ++b)
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
+                      extra_slave[b][d];
+                    statistics.force[d] += extra_slave[b][d];
+                    I.f_pair.local_element(I.node_dofs[mn[b]][d]) +=
+                      extra_master[b][d];
+                  }
             }
         }
       I.f_pair.compress(VectorOperation::add);
@@ -1162,6 +1234,12 @@ namespace rubberdyn
       Implementation &I = *impl;
       if (!I.trial_pending)
         return;
+      if (I.trace.enabled)
+        I.trace_step(I.audit.started ?
+                       I.audit.trial_work + I.energy +
+                         I.accepted_friction_work + I.trial_dissipation -
+                         I.audit.energy_at_start :
+                       0.);
       if (!I.audit.started)
         {
           I.audit.started         = true;

@@ -55,6 +55,10 @@ namespace rubberdyn
       {
         unsigned int  slave, master;
         MortarSegment integrals;
+        /** Its weight and the weight's gradient (mortar_segment_weight();
+         * tied segments: 1 and 0). */
+        double       weight = 1.;
+        Tensor<1, 3> weight_gradient;
       };
 
       /**
@@ -300,19 +304,36 @@ namespace rubberdyn
       }
 
       /**
-       * Whether the segment of @p slave and @p master lies within the
-       * capture margin: its mean gap along the slave facet's normal,
-       * |n . sum_a weighted_a| / area, at most the margin (which covers the
-       * tie tolerance). Farther apart is not the contact's (the back of a
-       * thin part, a fold), whatever the search found. Also gives the
-       * segment's weighted gap vectors, @p weighted[a] = sum_b D_ab x_b -
-       * M_ab x^_b. The one cut of add_forces() and of the tangent.
+       * The forces on the solid of the segment @p s's weight: minus the
+       * derivative of the normal springs' energy of its active slave nodes
+       * (pass.shown_gap of the evaluation) with respect to the weight,
+       * times the weight's gradient (mortar_segment_weight()), on its slave
+       * corners (@p on_slave) and master corners (@p on_master). With them
+       * a segment that fades out at the capture margin does work on the
+       * solid for the energy its nodes' springs gain or lose.
        */
-      bool
-      within_margin(const FacetCorners  &slave,
+      void
+      weight_forces(const Pass          &pass,
+                    const StoredSegment &s,
+                    Tensor<1, 3> (&on_slave)[4],
+                    Tensor<1, 3> (&on_master)[4]) const;
+
+      /**
+       * The weight of the segment of @p slave and @p master within the
+       * capture margin (mortar_segment_weight(): 1 up to half the margin,
+       * 0 from the margin on, where the mean gap along the slave facet's
+       * normal is farther than the contact's: the back of a thin part, a
+       * fold, whatever the search found), and its @p weight_gradient.
+       * Also gives the segment's weighted gap vectors, @p weighted[a] =
+       * sum_b D_ab x_b - M_ab x^_b. The one weight of add_forces() and of
+       * the tangent.
+       */
+      double
+      margin_weight(const FacetCorners  &slave,
                     const FacetCorners  &master,
                     const MortarSegment &segment,
-                    Tensor<1, 3> (&weighted)[4]) const;
+                    Tensor<1, 3> (&weighted)[4],
+                    Tensor<1, 3> &weight_gradient) const;
 
       /** Whether a gap facet of this rank lies around the @p k-th node of
        * @p pass (its forces then are partly this rank's). */
@@ -352,10 +373,13 @@ namespace rubberdyn
        * false (and leaves @p force alone) if the node carries no traction.
        *
        * @p overlaps: the pairs (gap facet index, master facet) whose
-       * segments count. With @p record, all candidate pairs are tried and
+       * segments count, and whether the segment's weight is below 1 there
+       * (0 or 1). With @p record, all candidate pairs are tried and
        * @p overlaps becomes those that gave a segment (a first evaluation
        * in doubles); without, only those are integrated (the evaluation
-       * with derivatives, on a patch reduced to their nodes).
+       * with derivatives, on a patch reduced to their nodes: the node's
+       * row of D and M, all rows where the weight, which needs them, is
+       * below 1).
        */
       template <typename Number>
       bool
@@ -365,7 +389,7 @@ namespace rubberdyn
                   const std::vector<Point<3, Number>>      &y,
                   const double                              time,
                   std::vector<Tensor<1, 3, Number>>        &force,
-                  std::vector<std::array<unsigned int, 2>> &overlaps,
+                  std::vector<std::array<unsigned int, 3>> &overlaps,
                   const bool                                record) const;
 
       /**
@@ -487,10 +511,13 @@ namespace rubberdyn
       std::vector<MortarSlaveFacet> slave_facets;
 
       /** Scratch of integrate() with reuse: a facet's kept segments'
-       * weighted gap vectors (capacity kept between evaluations). */
+       * weighted gap vectors, weights and their gradients (capacity kept
+       * between evaluations). */
       struct WeightedGaps
       {
         Tensor<1, 3> vectors[4];
+        double       weight = 1.;
+        Tensor<1, 3> gradient;
       };
       std::vector<WeightedGaps> kept_weighted;
 
@@ -521,6 +548,35 @@ namespace rubberdyn
         std::vector<double> u_accepted, f_accepted;
       };
       WorkAudit audit;
+
+      /**
+       * The developer's trace of a pair's energy error (environment
+       * variable RUBBERDYN_PAIR_TRACE=<pair name>; doc/contact.md,
+       * "Where a pair makes energy"): at each accepted evaluation, each
+       * slave node's share of the step's error, the trapezoidal work of
+       * its traction's forces (through its rows of the segments, and its
+       * share of the weights' forces) plus the change of its springs'
+       * energy, written to stderr for the steps where a share or the
+       * pair's error moved by more than 0.02 J. The state of the last
+       * accepted evaluation.
+       */
+      struct Trace
+      {
+        bool                                    enabled  = false;
+        bool                                    have_old = false;
+        std::vector<Point<3>>                   x;
+        std::vector<std::vector<StoredSegment>> segments;
+        std::vector<Tensor<1, 3>>               traction, normal;
+        std::vector<double>                     energy, area, gap, penalty;
+        std::vector<unsigned int>               n_segments;
+        double                                  error = 0.;
+      };
+      Trace trace;
+
+      /** The trace's step (Trace), @p error_now the pair's energy error
+       * at this evaluation (J). */
+      void
+      trace_step(const double error_now);
     };
   } // namespace contact
 } // namespace rubberdyn

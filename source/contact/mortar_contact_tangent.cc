@@ -28,12 +28,18 @@ namespace rubberdyn
         return result;
       }
 
-      /** The forces of one segment's row a on the patch. */
+      /** The forces of one segment's row a on the patch: its integrals,
+       * and the segment's weight, the weight's gradient and the column sums
+       * of D and M (mortar_segment_weight(); 1 and zeros where it is 1). */
       template <typename Number>
       struct SegmentRow
       {
-        unsigned int slave_facet, master_facet;
-        Number       D[4], M[4];
+        unsigned int         slave_facet, master_facet;
+        Number               D[4], M[4];
+        Number               weight = 1.;
+        Tensor<1, 3, Number> weight_gradient;
+        bool                 tapered = false;
+        Number               column_D[4], column_M[4];
       };
     } // namespace
 
@@ -83,7 +89,7 @@ namespace rubberdyn
       const std::vector<Point<3, Number>>      &y,
       const double                              time,
       std::vector<Tensor<1, 3, Number>>        &force,
-      std::vector<std::array<unsigned int, 2>> &overlaps,
+      std::vector<std::array<unsigned int, 3>> &overlaps,
       const bool                                record) const
     {
       using Vector            = Tensor<1, 3, Number>;
@@ -121,7 +127,8 @@ namespace rubberdyn
               const unsigned int a  = corner_of(f);
               const auto        &sn = facet_nodes[f];
               const auto        &mn = facet_nodes[s.master];
-              SegmentRow<Number> row{f, s.master, {}, {}};
+              SegmentRow<Number>
+                row{f, s.master, {}, {}, Number(1.), {}, false, {}, {}};
               for (unsigned int b = 0; b < 4; ++b)
                 {
                   row.D[b] = s.integrals.D[a][b];
@@ -149,12 +156,12 @@ namespace rubberdyn
                    ++j)
                 for (const unsigned int m :
                      pass.candidates[pass.node_gap_facets[j]])
-                  overlaps.push_back({{pass.node_gap_facets[j], m}});
+                  overlaps.push_back({{pass.node_gap_facets[j], m, 0u}});
             }
-          std::vector<std::array<unsigned int, 2>> kept;
+          std::vector<std::array<unsigned int, 3>> kept;
           FacetCornersOf<Number>  slave_corners, master_corners;
           MortarSegmentOf<Number> segment;
-          for (const auto &[i, m] : overlaps)
+          for (const auto &[i, m, tapered] : overlaps)
             {
               const unsigned int f  = pass.gap_facets[i];
               const unsigned int a  = corner_of(f);
@@ -165,37 +172,60 @@ namespace rubberdyn
                   slave_corners[b]  = y[at(sn[b])];
                   master_corners[b] = y[at(mn[b])];
                 }
-              // The values: the whole segment, for the same cut as
+              // The values: the whole segment, for the same weight as
               // add_forces(). The derivatives: the node's row only, of the
-              // segments that passed.
+              // segments that passed, all rows where the weight is below
+              // 1 (it depends on them).
+              const bool all_rows = record || tapered;
               if (!integrate_mortar_segment(slave_corners,
                                             master_corners,
                                             segment,
-                                            record ? 4 : a))
+                                            all_rows ? 4 : a))
                 continue;
-              if constexpr (std::is_same<Number, double>::value)
-                if (record)
-                  {
-                    Tensor<1, 3> weighted[4];
-                    if (!within_margin(slave_corners,
-                                       master_corners,
-                                       segment,
-                                       weighted))
-                      continue;
-                    kept.push_back({{i, m}});
-                  }
-              SegmentRow<Number> row{f, m, {}, {}};
+              SegmentRow<Number>
+                row{f, m, {}, {}, Number(1.), {}, false, {}, {}};
+              if (all_rows)
+                {
+                  Tensor<1, 3, Number> weighted[4];
+                  for (unsigned int c = 0; c < 4; ++c)
+                    for (unsigned int b = 0; b < 4; ++b)
+                      weighted[c] += segment.D[c][b] * slave_corners[b] -
+                                     segment.M[c][b] * master_corners[b];
+                  row.weight = mortar_segment_weight(slave_corners,
+                                                     segment,
+                                                     weighted,
+                                                     margin,
+                                                     row.weight_gradient);
+                  if (record)
+                    {
+                      if (!(value_of(row.weight) > 0.))
+                        continue;
+                      kept.push_back(
+                        {{i, m, value_of(row.weight) < 1. ? 1u : 0u}});
+                    }
+                  row.tapered = value_of(row.weight) < 1.;
+                  for (unsigned int b = 0; b < 4; ++b)
+                    {
+                      row.column_D[b] = row.column_M[b] = 0.;
+                      for (unsigned int c = 0; c < 4; ++c)
+                        {
+                          row.column_D[b] += segment.D[c][b];
+                          row.column_M[b] += segment.M[c][b];
+                        }
+                    }
+                }
               for (unsigned int b = 0; b < 4; ++b)
                 {
                   row.D[b] = segment.D[a][b];
                   row.M[b] = segment.M[a][b];
-                  A += row.D[b];
-                  gap +=
-                    row.D[b] * slave_corners[b] - row.M[b] * master_corners[b];
+                  A += row.weight * row.D[b];
+                  gap += row.weight * (row.D[b] * slave_corners[b] -
+                                       row.M[b] * master_corners[b]);
                   if (coulomb)
                     slip +=
-                      row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
-                      row.M[b] * minus(master_corners[b], x_accepted[mn[b]]);
+                      row.weight *
+                      (row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
+                       row.M[b] * minus(master_corners[b], x_accepted[mn[b]]));
                 }
               if (owns(pass, i))
                 rows.push_back(row);
@@ -207,7 +237,8 @@ namespace rubberdyn
         return false;
 
       // The traction, as add_forces() has it.
-      Vector traction;
+      Vector traction, n;
+      Number g = 0., p = 0.;
       if (tied)
         traction = Number(-pass.penalty / A) * gap;
       else
@@ -216,8 +247,8 @@ namespace rubberdyn
             [&](const unsigned int node) -> const Point<3, Number> & {
             return y[at(node)];
           };
-          const Vector n = nodal_normal<Number>(pass, k, position);
-          Number g = -(n * gap) / A;
+          n = nodal_normal<Number>(pass, k, position);
+          g = -(n * gap) / A;
           // A closed gap (g = 0, to the round-off of the integrals) is
           // active: its derivative is the closed side's, so that a body
           // held only by faces that touch in the mesh has stiffness; its
@@ -228,8 +259,8 @@ namespace rubberdyn
             return false;
           if (value_of(g) > 0.)
             g -= value_of(g);
-          const Number p = -pass.penalty * g;
-          traction       = Number(-p) * n;
+          p        = -pass.penalty * g;
+          traction = Number(-p) * n;
           if (coulomb)
             {
               Vector     old, increment;
@@ -250,13 +281,37 @@ namespace rubberdyn
             }
         }
 
-      // D t on the slave side, -M t on the master side.
+      // w D t on the slave side, -w M t on the master side; where the
+      // weight is below 1, the node's spring's share of the weight's
+      // forces (weight_forces()).
       for (const SegmentRow<Number> &row : rows)
-        for (unsigned int b = 0; b < 4; ++b)
-          {
-            force[at(facet_nodes[row.slave_facet][b])] += row.D[b] * traction;
-            force[at(facet_nodes[row.master_facet][b])] -= row.M[b] * traction;
-          }
+        {
+          const auto &sn = facet_nodes[row.slave_facet];
+          const auto &mn = facet_nodes[row.master_facet];
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              force[at(sn[b])] += Number(row.weight * row.D[b]) * traction;
+              force[at(mn[b])] -= Number(row.weight * row.M[b]) * traction;
+            }
+          if (tied || !row.tapered || !(value_of(p) > 0.))
+            continue;
+          Number row_area = 0.;
+          Vector row_gap;
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              row_area += row.D[b];
+              row_gap += row.D[b] * y[at(sn[b])] - row.M[b] * y[at(mn[b])];
+            }
+          const Number minus_dE_dw =
+            -p * Number(n * row_gap + 0.5 * g * row_area);
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              force[at(sn[b])] +=
+                Number(minus_dE_dw * row.column_D[b]) * row.weight_gradient;
+              force[at(mn[b])] -=
+                Number(minus_dE_dw * row.column_M[b]) * row.weight_gradient;
+            }
+        }
       return true;
     }
 
@@ -275,7 +330,7 @@ namespace rubberdyn
       std::vector<Tensor<1, 3, ADNumber>>      force_ad;
       std::vector<types::global_dof_index>     dofs;
       std::vector<double>                      K;
-      std::vector<std::array<unsigned int, 2>> overlaps;
+      std::vector<std::array<unsigned int, 3>> overlaps;
       // (Tied pairs integrate their stored segments, not candidates.)
       const bool tied =
         definition.type == model::ContactPairDefinition::Type::tied;

@@ -510,6 +510,38 @@ namespace rubberdyn
 
 
 
+    template <typename Number>
+    Number
+    mortar_segment_weight(const FacetCornersOf<Number>  &slave,
+                          const MortarSegmentOf<Number> &segment,
+                          const Tensor<1, 3, Number> (&weighted)[4],
+                          const double          margin,
+                          Tensor<1, 3, Number> &weight_gradient)
+    {
+      weight_gradient = Tensor<1, 3, Number>();
+      Tensor<1, 3, Number> normal =
+        cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
+      normal /= normal.norm();
+      Tensor<1, 3, Number> total;
+      for (unsigned int a = 0; a < 4; ++a)
+        total += weighted[a];
+      const Number mean_gap = Number(normal * total) / segment.area;
+      // r = |gbar| / margin; the blend in t = 2 r - 1 from 0 to 1.
+      const double sign = value_of(mean_gap) < 0. ? -1. : 1.;
+      const Number r    = sign * mean_gap / margin;
+      if (!(value_of(r) > 0.5))
+        return Number(1.);
+      if (!(value_of(r) < 1.))
+        return Number(0.);
+      const Number t = 2. * r - 1.;
+      // w = 1 - (3 t^2 - 2 t^3), dw/dr = -12 t (1 - t).
+      const Number slope = -12. * t * (1. - t) * sign / margin;
+      weight_gradient    = Number(slope / segment.area) * normal;
+      return 1. - t * t * (3. - 2. * t);
+    }
+
+
+
     template void
     facet_shape_values(const double &, const double &, double (&)[4]);
     template class MortarSlaveFacetOf<double>;
@@ -519,6 +551,18 @@ namespace rubberdyn
                              const FacetCornersOf<double> &,
                              MortarSegmentOf<double> &,
                              const unsigned int);
+    template double
+    mortar_segment_weight(const FacetCornersOf<double> &,
+                          const MortarSegmentOf<double> &,
+                          const Tensor<1, 3, double> (&)[4],
+                          const double,
+                          Tensor<1, 3, double> &);
+    template ADNumber
+    mortar_segment_weight(const FacetCornersOf<ADNumber> &,
+                          const MortarSegmentOf<ADNumber> &,
+                          const Tensor<1, 3, ADNumber> (&)[4],
+                          const double,
+                          Tensor<1, 3, ADNumber> &);
     template bool
     integrate_mortar_segment(const FacetCornersOf<ADNumber> &,
                              const FacetCornersOf<ADNumber> &,

@@ -24,48 +24,19 @@
 // The tangent must also be non-trivial (|K w| > 0) and its blocks must
 // stay within the couplings of add_couplings(). Run on 1 and 2 ranks.
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/tensor.h>
-#include <deal.II/lac/vector.h>
 
 #include <rubberdyn/contact/mortar_contact_pair.h>
-#include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
-
-#include <cmath>
-#include <set>
 
 #include "../model/model_fixtures.h"
 #include "../tests.h"
+#include "mortar_probe.h"
 
 using namespace dealii;
 using namespace rubberdyn;
+using mortar_probe::wobble;
 using testing::check;
 using testing::out;
-
-namespace
-{
-  /** A smooth pseudo-random vector field of amplitude 1 (mm). */
-  Tensor<1, 3>
-  wobble(const Point<3> &X, const double phase)
-  {
-    Tensor<1, 3> w;
-    for (unsigned int d = 0; d < 3; ++d)
-      w[d] = std::sin(1.7 * X[0] + 2.3 * X[1] + 3.1 * X[2] + phase + 1.9 * d) *
-             std::cos(0.9 * X[0] - 1.3 * X[1] + 0.7 * d + 0.5 * phase);
-    return w;
-  }
-
-  /** The owned entries of @p f on every rank, as one full vector. */
-  Vector<double>
-  gather(const VectorType &f, const MPI_Comm comm)
-  {
-    Vector<double> full(f.size());
-    for (unsigned int i = 0; i < f.locally_owned_size(); ++i)
-      full[f.get_partitioner()->local_to_global(i)] = f.local_element(i);
-    Utilities::MPI::sum(full, comm, full);
-    return full;
-  }
-} // namespace
 
 
 
@@ -79,10 +50,8 @@ main(int argc, char **argv)
   model::Model model(comm);
   fixtures::make_block_on_plate(model, fixtures::steel_part("block", 1));
 
-  VectorType u(model.partitioner), v(model.partitioner),
-    mass(model.partitioner), w(model.partitioner), f(model.partitioner);
-  mass = 1.;
-  mass.update_ghost_values();
+  VectorType          u(model.partitioner), w(model.partitioner);
+  mortar_probe::Probe probe(model);
   // The block (material 1): over the plate's edge at x = 20 (block x from
   // 11 to 21), tilted about y, into the plate by 5e-3 to 1.5e-2 mm, warped.
   const auto place = [&](VectorType  &vector,
@@ -108,78 +77,26 @@ main(int argc, char **argv)
                                          const Point<3>          &X) {
                                        return wobble(X, id == 1 ? 2. : 3.);
                                      });
-  std::vector<model::RigidBody> bodies;
-
-  const auto forces = [&](contact::MortarContactPair &pair,
-                          const VectorType           &at,
-                          const double                time) {
-    const model::EvaluationPoint point{at, v, mass, bodies, time};
-    model::ContributionResults   results;
-    results.reset(2, 0);
-    f = 0.;
-    pair.add_forces(point, f, results);
-    return gather(f, comm);
-  };
-
   // Compare K w with the central difference at u (at time t); the pair
   // has been evaluated (and its state accepted) as the case needs.
   const auto compare = [&](const std::string          &name,
                            contact::MortarContactPair &pair,
                            const double                time) {
-    const double h = 1e-6;
-    VectorType   plus(u), minus(u);
-    plus.add(h, w);
-    minus.add(-h, w);
-    plus.update_ghost_values();
-    minus.update_ghost_values();
-    const Vector<double> f_plus  = forces(pair, plus, time);
-    const Vector<double> f_minus = forces(pair, minus, time);
-    forces(pair, u, time);
+    const mortar_probe::TangentComparison c =
+      probe.compare_tangent(pair, u, w, time);
     const unsigned int active =
       Utilities::MPI::sum(pair.last_statistics().active_nodes, comm);
-
-    std::set<std::pair<types::global_dof_index, types::global_dof_index>>
-      announced;
-    pair.add_couplings([&](const std::vector<types::global_dof_index> &dofs) {
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          announced.emplace(i, j);
-    });
-    bool                         within = true;
-    Vector<double>               Kw(u.size());
-    const Vector<double>         w_full = gather(w, comm);
-    const model::EvaluationPoint point{u, v, mass, bodies, time};
-    pair.add_tangents(point,
-                      [&](const std::vector<types::global_dof_index> &dofs,
-                          const std::vector<double>                  &K) {
-                        const unsigned int n = dofs.size();
-                        for (unsigned int i = 0; i < n; ++i)
-                          for (unsigned int j = 0; j < n; ++j)
-                            {
-                              Kw[dofs[i]] += K[n * i + j] * w_full[dofs[j]];
-                              if (K[n * i + j] != 0. &&
-                                  announced.count({dofs[i], dofs[j]}) == 0)
-                                within = false;
-                            }
-                      });
-    Utilities::MPI::sum(Kw, comm, Kw);
-    within = !Utilities::MPI::logical_or(!within, comm);
-    Vector<double> difference(u.size());
-    for (unsigned int i = 0; i < u.size(); ++i)
-      difference[i] = -(f_plus[i] - f_minus[i]) / (2. * h);
-    const double norm = difference.l2_norm();
-    difference -= Kw;
-    const double error = difference.l2_norm() / norm;
     if (root)
       out() << name << ": " << active << " active slave nodes, K w equals "
             << "the central difference to below 1e-6: "
-            << (error < 1e-6 ? "yes" : "no") << "; blocks within the "
-            << "announced couplings: " << (within ? "yes" : "no") << std::endl;
-    check(norm > 0., name + ": a non-trivial tangent");
-    check(error < 1e-6,
+            << (c.error < 1e-6 ? "yes" : "no") << "; blocks within the "
+            << "announced couplings: " << (c.within_couplings ? "yes" : "no")
+            << std::endl;
+    check(c.norm > 0., name + ": a non-trivial tangent");
+    check(c.error < 1e-6,
           name + ": K w against the central difference (error " +
-            testing::sci(error) + ")");
-    check(within, name + ": blocks within add_couplings()");
+            testing::sci(c.error) + ")");
+    check(c.within_couplings, name + ": blocks within add_couplings()");
   };
 
   model::ContactPairDefinition definition;
@@ -208,13 +125,13 @@ main(int argc, char **argv)
     {
       contact::MortarContactPair pair(model, definition);
       place(u, 0., 1e-2, 2e-3);
-      forces(pair, u, 0.);
+      probe.forces(pair, u, 0.);
       pair.accept_step();
       // (Slowly back, quickly on: the decay law barely shrinks the cone
       // for the first.)
       const double time = motion < 0. ? 1. : 1e-3;
       place(u, motion, 1e-2, 2e-3);
-      forces(pair, u, time);
+      probe.forces(pair, u, time);
       const unsigned int slipping =
         Utilities::MPI::sum(pair.last_statistics().slipping_nodes, comm);
       const unsigned int active =
