@@ -88,13 +88,13 @@ namespace rubberdyn
      * slave facet's central normal, gbar = n . sum_a weighted_a / area (mm;
      * @p weighted[a] = sum_b D_ab x_b - M_ab x^_b): 1 while |gbar| is at
      * most half the capture @p margin (mm), 0 from the margin on (farther
-     * apart is not the contact's: the back of a thin part, a fold, a
-     * rounded edge looking past its partner), and a C1 cubic between. A
-     * segment that left at the margin with weight 1 would change its nodes'
-     * mean gaps by a jump: at a rounded edge whose facets see the partner
-     * 2 mm away while the flat facets beside them press into it, a node's
-     * gap jumped from -0.05 to -0.4 mm and its spring's energy by 23 J
-     * within one step, without work (bushing test 4, `nut_washer`).
+     * apart is not the contact's: the back of a thin part, a fold, a face
+     * tilted away from its partner), and a C1 cubic between. A segment that
+     * left at the margin with weight 1 would change its nodes' mean gaps by
+     * a jump: where a node's segment sees the partner nearly 3 mm away while
+     * its others press into it (the nut's edge tilted over a dished washer),
+     * the node's gap jumped from -0.05 to -0.4 mm and its spring's energy
+     * by 23 J within one step, without work (bushing test 4, `nut_washer`).
      *
      * Also gives @p weight_gradient = (dw/dgbar) n / area (1/mm^3): with
      * the derivatives of D, M, n and the area left out, as in the pair's
