@@ -1158,9 +1158,6 @@ namespace rubberdyn
                 continue;
               const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
               const auto &mn = I.facet_nodes[s.master];
-              Tensor<1, 3> extra_slave[4], extra_master[4];
-              if (!tied && s.weight_gradient.norm_square() > 0.)
-                I.weight_forces(pass, s, extra_slave, extra_master);
               for (unsigned int a = 0; a < 4; ++a)
                 {
                   const Tensor<1, 3> t = s.weight * I.traction[sn[a]];
@@ -1177,14 +1174,18 @@ namespace rubberdyn
                           s.integrals.M[a][b] * t[d];
                       }
                 }
+              if (tied || s.weight_gradient.norm_square() == 0.)
+                continue;
+              Tensor<1, 3> on_slave[4], on_master[4];
+              I.weight_forces(pass, s, on_slave, on_master);
               for (unsigned int b = 0; b < 4; ++b)
                 for (unsigned int d = 0; d < 3; ++d)
                   {
                     I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
-                      extra_slave[b][d];
-                    statistics.force[d] += extra_slave[b][d];
+                      on_slave[b][d];
+                    statistics.force[d] += on_slave[b][d];
                     I.f_pair.local_element(I.node_dofs[mn[b]][d]) +=
-                      extra_master[b][d];
+                      on_master[b][d];
                   }
             }
         }
@@ -1235,11 +1236,7 @@ namespace rubberdyn
       if (!I.trial_pending)
         return;
       if (I.trace.enabled)
-        I.trace_step(I.audit.started ?
-                       I.audit.trial_work + I.energy +
-                         I.accepted_friction_work + I.trial_dissipation -
-                         I.audit.energy_at_start :
-                       0.);
+        I.trace_step(energy_error());
       if (!I.audit.started)
         {
           I.audit.started         = true;
