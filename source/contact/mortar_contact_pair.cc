@@ -774,13 +774,12 @@ namespace rubberdyn
               for (const Pass::KeptSegment &k : kept.segments)
                 {
                   data.push_back(k.master);
-                  data.insert(data.end(),
-                              &k.integrals.D[0][0],
-                              &k.integrals.D[0][0] + 16);
-                  data.insert(data.end(),
-                              &k.integrals.M[0][0],
-                              &k.integrals.M[0][0] + 16);
-                  data.push_back(k.integrals.area);
+                  const MortarSegment &g = k.integrals;
+                  data.insert(data.end(), &g.D[0][0], &g.D[0][0] + 16);
+                  data.insert(data.end(), &g.M[0][0], &g.M[0][0] + 16);
+                  data.push_back(g.area);
+                  for (unsigned int d = 0; d < 3; ++d)
+                    data.insert(data.end(), {g.slope[d], g.normal[d]});
                   add_corners(k.master_corners);
                 }
             }
@@ -831,14 +830,20 @@ namespace rubberdyn
               kept.segments.resize(static_cast<std::size_t>(next()));
               for (Pass::KeptSegment &k : kept.segments)
                 {
-                  k.master = static_cast<unsigned int>(next());
+                  k.master         = static_cast<unsigned int>(next());
+                  MortarSegment &g = k.integrals;
                   for (unsigned int a = 0; a < 4; ++a)
                     for (unsigned int b = 0; b < 4; ++b)
-                      k.integrals.D[a][b] = next();
+                      g.D[a][b] = next();
                   for (unsigned int a = 0; a < 4; ++a)
                     for (unsigned int b = 0; b < 4; ++b)
-                      k.integrals.M[a][b] = next();
-                  k.integrals.area = next();
+                      g.M[a][b] = next();
+                  g.area = next();
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      g.slope[d]  = next();
+                      g.normal[d] = next();
+                    }
                   corners(k.master_corners);
                 }
             }
@@ -1163,15 +1168,27 @@ namespace rubberdyn
                   const Tensor<1, 3> t = s.weight * I.traction[sn[a]];
                   if (t.norm_square() == 0.)
                     continue;
+                  // The normal traction of the segment: the derivative of
+                  // the node's weighted normal gap n_a . n_0 int N_a G dA,
+                  // -p (n_a . n_0)(n_0 - grad h), instead of -p n_a
+                  // (MortarSegment::slope): where the slave slides along a
+                  // master face that is not parallel to it, the gap changes
+                  // by the face's slope.
+                  const double p = tied ? 0. : pass.shown_pressure[sn[a]];
+                  const Tensor<1, 3> &n   = I.normal[sn[a]];
+                  const Tensor<1, 3> &n_0 = s.integrals.normal;
+                  const Tensor<1, 3>  t_all =
+                    t + (s.weight * p) *
+                          (n - (n * n_0) * (n_0 - s.integrals.slope));
                   for (unsigned int b = 0; b < 4; ++b)
                     for (unsigned int d = 0; d < 3; ++d)
                       {
-                        const double on_slave = s.integrals.D[a][b] * t[d];
+                        const double on_slave = s.integrals.D[a][b] * t_all[d];
                         I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
                           on_slave;
                         statistics.force[d] += on_slave;
                         I.f_pair.local_element(I.node_dofs[mn[b]][d]) -=
-                          s.integrals.M[a][b] * t[d];
+                          s.integrals.M[a][b] * t_all[d];
                       }
                 }
               if (tied || s.weight_gradient.norm_square() == 0.)

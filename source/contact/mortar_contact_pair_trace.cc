@@ -97,6 +97,16 @@ namespace rubberdyn
                       }
                     W[node] += s.weight * (t[node] * displacement);
                     const double g = gaps[node];
+                    // The segment's normal traction (add_forces()).
+                    if (g < 0.)
+                      {
+                        const Tensor<1, 3> &n   = normals[node];
+                        const Tensor<1, 3> &n_0 = s.integrals.normal;
+                        W[node] +=
+                          s.weight * (-penalties[node] * g) *
+                          ((n - (n * n_0) * (n_0 - s.integrals.slope)) *
+                           displacement);
+                      }
                     if (weight_change != 0. && g < 0.)
                       {
                         const double p = -penalties[node] * g;

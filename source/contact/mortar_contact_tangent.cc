@@ -40,6 +40,9 @@ namespace rubberdyn
         Tensor<1, 3, Number> weight_gradient;
         bool                 tapered = false;
         Number               column_D[4], column_M[4];
+        /** The master face's mean slope and the plane's normal
+         * (MortarSegment::slope). */
+        Tensor<1, 3, Number> slope, normal;
       };
     } // namespace
 
@@ -127,8 +130,9 @@ namespace rubberdyn
               const unsigned int a  = corner_of(f);
               const auto        &sn = facet_nodes[f];
               const auto        &mn = facet_nodes[s.master];
-              SegmentRow<Number>
-                row{f, s.master, {}, {}, Number(1.), {}, false, {}, {}};
+              SegmentRow<Number> row{};
+              row.slave_facet  = f;
+              row.master_facet = s.master;
               for (unsigned int b = 0; b < 4; ++b)
                 {
                   row.D[b] = s.integrals.D[a][b];
@@ -182,8 +186,9 @@ namespace rubberdyn
                                             segment,
                                             all_rows ? 4 : a))
                 continue;
-              SegmentRow<Number>
-                row{f, m, {}, {}, Number(1.), {}, false, {}, {}};
+              SegmentRow<Number> row{};
+              row.slave_facet  = f;
+              row.master_facet = m;
               if (all_rows)
                 {
                   Tensor<1, 3, Number> weighted[4];
@@ -214,6 +219,8 @@ namespace rubberdyn
                         }
                     }
                 }
+              row.slope  = segment.slope;
+              row.normal = segment.normal;
               for (unsigned int b = 0; b < 4; ++b)
                 {
                   row.D[b] = segment.D[a][b];
@@ -281,17 +288,22 @@ namespace rubberdyn
             }
         }
 
-      // w D t on the slave side, -w M t on the master side; where the
-      // weight is below 1, the node's spring's share of the weight's
-      // forces (weight_forces()).
+      // w D t on the slave side, -w M t on the master side, t with the
+      // segment's normal traction (add_forces()); where the weight is
+      // below 1, the node's spring's share of the weight's forces
+      // (weight_forces()).
       for (const SegmentRow<Number> &row : rows)
         {
-          const auto &sn = facet_nodes[row.slave_facet];
-          const auto &mn = facet_nodes[row.master_facet];
+          const auto  &sn = facet_nodes[row.slave_facet];
+          const auto  &mn = facet_nodes[row.master_facet];
+          const Vector t  = tied ?
+                              traction :
+                              traction + p * (n - Number(n * row.normal) *
+                                                   (row.normal - row.slope));
           for (unsigned int b = 0; b < 4; ++b)
             {
-              force[at(sn[b])] += Number(row.weight * row.D[b]) * traction;
-              force[at(mn[b])] -= Number(row.weight * row.M[b]) * traction;
+              force[at(sn[b])] += Number(row.weight * row.D[b]) * t;
+              force[at(mn[b])] -= Number(row.weight * row.M[b]) * t;
             }
           if (tied || !row.tapered || !(value_of(p) > 0.))
             continue;

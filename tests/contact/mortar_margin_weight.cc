@@ -85,16 +85,15 @@ main(int argc, char **argv)
     contact::MortarContactPair pair(model, definition);
     const unsigned int         n_steps = 3000;
     const double               start = 1., end = 2.5;
-    double                     largest_error = 0.;
-    for (unsigned int step = 0; step <= n_steps; ++step)
-      {
-        place(start + (end - start) * step / n_steps);
-        probe.forces(pair, u, 1e-3 * step);
-        pair.accept_step();
-        largest_error =
-          std::max(largest_error,
-                   std::abs(Utilities::MPI::sum(pair.energy_error(), comm)));
-      }
+    const double               largest_error =
+      probe
+        .walk(pair,
+              u,
+              n_steps,
+              [&](const unsigned int step) {
+                place(start + (end - start) * step / n_steps);
+              })
+        .largest_error;
     const double energy = Utilities::MPI::sum(pair.contact_energy(), comm);
     const unsigned int active =
       Utilities::MPI::sum(pair.last_statistics().active_nodes, comm);

@@ -12,6 +12,7 @@
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <utility>
@@ -51,6 +52,13 @@ namespace mortar_probe
     double error = 0., norm = 0.;
     /** Whether every nonzero block entry lies within add_couplings(). */
     bool within_couplings = true;
+  };
+
+  /** What walk() saw along a path. */
+  struct WorkAudit
+  {
+    /** The largest |energy_error()| and contact_energy() (J). */
+    double largest_error = 0., largest_energy = 0.;
   };
 
   /**
@@ -139,6 +147,36 @@ namespace mortar_probe
       difference -= Kw;
       result.error = difference.l2_norm() / result.norm;
       return result;
+    }
+
+    /**
+     * Walk @p pair along a path of @p n_steps + 1 evaluations: at each
+     * step @p place(step) sets the displacement @p u, the pair is
+     * evaluated at time 1e-3 step ms and the evaluation accepted; the work
+     * audit's largest error and the springs' largest energy, over the
+     * ranks.
+     */
+    template <typename Place>
+    WorkAudit
+    walk(contact::MortarContactPair &pair,
+         const VectorType           &u,
+         const unsigned int          n_steps,
+         const Place                &place)
+    {
+      WorkAudit audit;
+      for (unsigned int step = 0; step <= n_steps; ++step)
+        {
+          place(step);
+          forces(pair, u, 1e-3 * step);
+          pair.accept_step();
+          audit.largest_error =
+            std::max(audit.largest_error,
+                     std::abs(Utilities::MPI::sum(pair.energy_error(), comm)));
+          audit.largest_energy =
+            std::max(audit.largest_energy,
+                     Utilities::MPI::sum(pair.contact_energy(), comm));
+        }
+      return audit;
     }
 
   private:

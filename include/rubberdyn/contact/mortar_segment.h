@@ -43,7 +43,36 @@ namespace rubberdyn
       Number M[4][4];
       /** Area of the overlap (mm^2): the sum of all D_ab (or of all M_ak). */
       Number area;
+      /**
+       * The master face's mean slope over the overlap (dimensionless, a
+       * vector along the auxiliary plane, whose unit normal is @p normal):
+       * with h the master face's height above the plane at the master
+       * point matched to each slave point, the area-weighted mean of its
+       * gradient along the plane, grad h at each fan triangle's centroid
+       * (exact for a flat master facet, whose slope is one constant),
+       * limited in length to max_mortar_slope. When
+       * the slave slides along a master face that is not parallel to it,
+       * the gap G between matched points changes by the slope: the
+       * weighted normal gap's variation is (doc/theory.md, section 15.2)
+       * @f[ \delta \int N_a G\,dA = \sum_b D_{ab}(\mathbf n - \nabla h)
+       *     \cdot\delta\mathbf x_b - \sum_k M_{ak}(\mathbf n - \nabla h)
+       *     \cdot\delta\hat{\mathbf x}_k @f]
+       * at motions that keep the plane's normal and the slave facet's
+       * shape (terms of the order of the gap over the facet's size, and
+       * the turning plane's, left out).
+       */
+      Tensor<1, 3, Number> slope;
+      /** The auxiliary plane's unit normal (the slave facet's). */
+      Tensor<1, 3, Number> normal;
     };
+
+    /**
+     * The largest master face slope the mortar traction follows
+     * (MortarSegmentOf::slope; tan 26.6 degrees): steeper mean slopes are
+     * scaled down to it, which keeps the traction's tangential stiffness
+     * within a quarter of its normal one.
+     */
+    constexpr double max_mortar_slope = 0.5;
 
     /** The mortar integrals in double precision. */
     using MortarSegment = MortarSegmentOf<double>;
@@ -65,6 +94,10 @@ namespace rubberdyn
      * The master facet must face the slave one (its outward normal
      * against the slave's); a master facet seen from behind, or no overlap,
      * gives false and leaves @p segment undefined.
+     *
+     * With the integrals, the master face's mean slope over the overlap
+     * (MortarSegmentOf::slope, from the master's inverse map's Jacobian at
+     * each fan triangle's centroid).
      *
      * With @p row < 4 only that row of D and M is integrated (the others
      * are zero): all a slave node's forces need, a quarter of the work.
