@@ -576,18 +576,18 @@ namespace rubberdyn
               row_gap +=
                 s.integrals.D[a][b] * x[sn[b]] - s.integrals.M[a][b] * x[mn[b]];
             }
-          minus_dE_dw -= p * (normal[node] * row_gap + 0.5 * g * row_area);
+          minus_dE_dw -= spring_energy_weight_derivative(p,
+                                                         g,
+                                                         normal[node],
+                                                         row_gap,
+                                                         row_area);
         }
+      double column_D[4], column_M[4];
+      column_sums(s.integrals, column_D, column_M);
       for (unsigned int b = 0; b < 4; ++b)
         {
-          double column_D = 0., column_M = 0.;
-          for (unsigned int a = 0; a < 4; ++a)
-            {
-              column_D += s.integrals.D[a][b];
-              column_M += s.integrals.M[a][b];
-            }
-          on_slave[b]  = (minus_dE_dw * column_D) * s.weight_gradient;
-          on_master[b] = (-minus_dE_dw * column_M) * s.weight_gradient;
+          on_slave[b]  = (minus_dE_dw * column_D[b]) * s.weight_gradient;
+          on_master[b] = (-minus_dE_dw * column_M[b]) * s.weight_gradient;
         }
     }
 
@@ -1165,30 +1165,26 @@ namespace rubberdyn
               const auto &mn = I.facet_nodes[s.master];
               for (unsigned int a = 0; a < 4; ++a)
                 {
-                  const Tensor<1, 3> t = s.weight * I.traction[sn[a]];
-                  if (t.norm_square() == 0.)
+                  if (I.traction[sn[a]].norm_square() == 0.)
                     continue;
-                  // The normal traction of the segment: the derivative of
-                  // the node's weighted normal gap n_a . n_0 int N_a G dA,
-                  // -p (n_a . n_0)(n_0 - grad h), instead of -p n_a
-                  // (MortarSegment::slope): where the slave slides along a
-                  // master face that is not parallel to it, the gap changes
-                  // by the face's slope.
-                  const double p = tied ? 0. : pass.shown_pressure[sn[a]];
-                  const Tensor<1, 3> &n   = I.normal[sn[a]];
-                  const Tensor<1, 3> &n_0 = s.integrals.normal;
-                  const Tensor<1, 3>  t_all =
-                    t + (s.weight * p) *
-                          (n - (n * n_0) * (n_0 - s.integrals.slope));
+                  // The segment's traction: its normal part follows the
+                  // master face's slope (segment_traction()).
+                  const double       p = tied ? 0. : pass.shown_pressure[sn[a]];
+                  const Tensor<1, 3> t =
+                    s.weight * segment_traction(I.traction[sn[a]],
+                                                p,
+                                                I.normal[sn[a]],
+                                                s.integrals.normal,
+                                                s.integrals.slope);
                   for (unsigned int b = 0; b < 4; ++b)
                     for (unsigned int d = 0; d < 3; ++d)
                       {
-                        const double on_slave = s.integrals.D[a][b] * t_all[d];
+                        const double on_slave = s.integrals.D[a][b] * t[d];
                         I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
                           on_slave;
                         statistics.force[d] += on_slave;
                         I.f_pair.local_element(I.node_dofs[mn[b]][d]) -=
-                          s.integrals.M[a][b] * t_all[d];
+                          s.integrals.M[a][b] * t[d];
                       }
                 }
               if (tied || s.weight_gradient.norm_square() == 0.)

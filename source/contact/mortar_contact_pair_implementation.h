@@ -62,6 +62,66 @@ namespace rubberdyn
       };
 
       /**
+       * A segment's traction from its slave node's, @p traction = -p n +
+       * t_T: the normal part turned to -p (n . n_0)(n_0 - slope), the
+       * derivative of the node's weighted normal gap where the master face
+       * has the mean @p slope over the segment relative to its plane of
+       * unit normal @p n_0 (MortarSegment::slope; doc/theory.md §15.2).
+       * The one traction of add_forces(), the tangent and the trace.
+       */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      segment_traction(const Tensor<1, 3, Number> &traction,
+                       const Number               &p,
+                       const Tensor<1, 3, Number> &n,
+                       const Tensor<1, 3, Number> &n_0,
+                       const Tensor<1, 3, Number> &slope)
+      {
+        return traction + p * (n - Number(n * n_0) * (n_0 - slope));
+      }
+
+      /**
+       * The column sums of a segment's D and M, sum_a D_ab and sum_a M_ak:
+       * with the weight's gradient, the weight's derivative with respect
+       * to the corners (mortar_segment_weight()).
+       */
+      template <typename Number>
+      void
+      column_sums(const MortarSegmentOf<Number> &segment,
+                  Number (&column_D)[4],
+                  Number (&column_M)[4])
+      {
+        for (unsigned int b = 0; b < 4; ++b)
+          {
+            column_D[b] = column_M[b] = 0.;
+            for (unsigned int a = 0; a < 4; ++a)
+              {
+                column_D[b] += segment.D[a][b];
+                column_M[b] += segment.M[a][b];
+              }
+          }
+      }
+
+      /**
+       * The derivative of an active slave node's normal spring energy
+       * p^2 A / 2 eps with respect to a segment's weight (J): with the
+       * node's pressure @p p, mean gap @p g and normal @p n and the
+       * segment's unweighted row of the weighted gap vector @p row_gap
+       * and of the covered area @p row_area, p (n . row_gap + g row_area /
+       * 2) (weight_forces(), the tangent and the trace).
+       */
+      template <typename Number>
+      Number
+      spring_energy_weight_derivative(const Number               &p,
+                                      const Number               &g,
+                                      const Tensor<1, 3, Number> &n,
+                                      const Tensor<1, 3, Number> &row_gap,
+                                      const Number               &row_area)
+      {
+        return p * (n * row_gap + 0.5 * g * row_area);
+      }
+
+      /**
        * Coulomb's return mapping on the weighted slip (Puso & Laursen
        * 2004, sect. 5), the one of add_forces() and of the tangent (with
        * Sacado numbers): the @p accepted tangential traction (GPa) turned

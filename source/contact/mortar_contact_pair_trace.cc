@@ -67,19 +67,12 @@ namespace rubberdyn
                 const auto &sn = facet_nodes[pass.gap_facets[s.slave]];
                 const auto &mn = facet_nodes[s.master];
                 // The weight's change over the step, to first order.
-                double weight_change = 0.;
+                double weight_change = 0., column_D[4], column_M[4];
+                column_sums(s.integrals, column_D, column_M);
                 for (unsigned int b = 0; b < 4; ++b)
-                  {
-                    double column_D = 0., column_M = 0.;
-                    for (unsigned int a = 0; a < 4; ++a)
-                      {
-                        column_D += s.integrals.D[a][b];
-                        column_M += s.integrals.M[a][b];
-                      }
-                    weight_change += s.weight_gradient *
-                                     (column_D * (x[sn[b]] - trace.x[sn[b]]) -
-                                      column_M * (x[mn[b]] - trace.x[mn[b]]));
-                  }
+                  weight_change += s.weight_gradient *
+                                   (column_D[b] * (x[sn[b]] - trace.x[sn[b]]) -
+                                    column_M[b] * (x[mn[b]] - trace.x[mn[b]]));
                 for (unsigned int a = 0; a < 4; ++a)
                   {
                     const unsigned int node = sn[a];
@@ -95,25 +88,22 @@ namespace rubberdyn
                         row_gap += s.integrals.D[a][b] * at[sn[b]] -
                                    s.integrals.M[a][b] * at[mn[b]];
                       }
-                    W[node] += s.weight * (t[node] * displacement);
                     const double g = gaps[node];
-                    // The segment's normal traction (add_forces()).
-                    if (g < 0.)
-                      {
-                        const Tensor<1, 3> &n   = normals[node];
-                        const Tensor<1, 3> &n_0 = s.integrals.normal;
-                        W[node] +=
-                          s.weight * (-penalties[node] * g) *
-                          ((n - (n * n_0) * (n_0 - s.integrals.slope)) *
-                           displacement);
-                      }
+                    const double p = g < 0. ? -penalties[node] * g : 0.;
+                    // The segment's traction (add_forces()).
+                    W[node] += s.weight * (segment_traction(t[node],
+                                                            p,
+                                                            normals[node],
+                                                            s.integrals.normal,
+                                                            s.integrals.slope) *
+                                           displacement);
                     if (weight_change != 0. && g < 0.)
-                      {
-                        const double p = -penalties[node] * g;
-                        W[node] -=
-                          p * (normals[node] * row_gap + 0.5 * g * row_area) *
-                          weight_change;
-                      }
+                      W[node] -= spring_energy_weight_derivative(p,
+                                                                 g,
+                                                                 normals[node],
+                                                                 row_gap,
+                                                                 row_area) *
+                                 weight_change;
                   }
               }
           };

@@ -209,15 +209,7 @@ namespace rubberdyn
                         {{i, m, value_of(row.weight) < 1. ? 1u : 0u}});
                     }
                   row.tapered = value_of(row.weight) < 1.;
-                  for (unsigned int b = 0; b < 4; ++b)
-                    {
-                      row.column_D[b] = row.column_M[b] = 0.;
-                      for (unsigned int c = 0; c < 4; ++c)
-                        {
-                          row.column_D[b] += segment.D[c][b];
-                          row.column_M[b] += segment.M[c][b];
-                        }
-                    }
+                  column_sums(segment, row.column_D, row.column_M);
                 }
               row.slope  = segment.slope;
               row.normal = segment.normal;
@@ -296,10 +288,9 @@ namespace rubberdyn
         {
           const auto  &sn = facet_nodes[row.slave_facet];
           const auto  &mn = facet_nodes[row.master_facet];
-          const Vector t  = tied ?
-                              traction :
-                              traction + p * (n - Number(n * row.normal) *
-                                                   (row.normal - row.slope));
+          const Vector t =
+            tied ? traction :
+                   segment_traction(traction, p, n, row.normal, row.slope);
           for (unsigned int b = 0; b < 4; ++b)
             {
               force[at(sn[b])] += Number(row.weight * row.D[b]) * t;
@@ -315,7 +306,7 @@ namespace rubberdyn
               row_gap += row.D[b] * y[at(sn[b])] - row.M[b] * y[at(mn[b])];
             }
           const Number minus_dE_dw =
-            -p * Number(n * row_gap + 0.5 * g * row_area);
+            -spring_energy_weight_derivative(p, g, n, row_gap, row_area);
           for (unsigned int b = 0; b < 4; ++b)
             {
               force[at(sn[b])] +=
