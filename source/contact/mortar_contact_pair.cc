@@ -37,6 +37,8 @@ namespace rubberdyn
                   ExcMessage("mortar contact pairs need the Q1 dofs"));
       if (const char *traced = std::getenv("RUBBERDYN_PAIR_TRACE"))
         trace.enabled = definition.name == traced;
+      if (const char *every = std::getenv("RUBBERDYN_PAIR_TRACE_EVERY"))
+        trace.report_every = std::max(1, std::atoi(every));
       // This rank's facets, then all of them, in an order that does not
       // depend on the partition (by their centres).
       std::vector<GatheredFacet>           own;
@@ -989,6 +991,11 @@ namespace rubberdyn
       I.shown_gaps_partial = false;
       double energy        = 0.;
       double dissipation = 0.;
+      if (I.trace.enabled)
+        {
+          I.trace.dissipation.assign(I.x.size(), 0.);
+          I.trace.slipping.assign(I.x.size(), 0);
+        }
       // An active node's share of the columns: pressure p, tangential
       // traction t (GPa) on its covered area A (mm^2).
       const auto book_active =
@@ -1103,7 +1110,11 @@ namespace rubberdyn
                           pass.trial_tangential[node]    = Tensor<1, 3>();
                           pass.trial_spring_energy[node] = 0.;
                           if (pass.counted[node])
-                            dissipation += accepted_spring;
+                            {
+                              dissipation += accepted_spring;
+                              if (I.trace.enabled)
+                                I.trace.dissipation[node] += accepted_spring;
+                            }
                         }
                       continue;
                     }
@@ -1138,10 +1149,16 @@ namespace rubberdyn
                         {
                           // The work done on the spring over the step
                           // (trapezoidal) less what it stores.
-                          dissipation +=
+                          const double node_dissipation =
                             -0.5 * A * ((old + tangential) * increment) -
                             (spring - accepted_spring);
+                          dissipation += node_dissipation;
                           energy += spring;
+                          if (I.trace.enabled)
+                            {
+                              I.trace.dissipation[node] += node_dissipation;
+                              I.trace.slipping[node] = slipping;
+                            }
                         }
                     }
                   if (pass.counted[node])

@@ -614,11 +614,14 @@ namespace rubberdyn
        * variable RUBBERDYN_PAIR_TRACE=<pair name>; doc/contact.md,
        * "Where a pair makes energy"): at each accepted evaluation, each
        * slave node's share of the step's error, the trapezoidal work of
-       * its traction's forces (through its rows of the segments, and its
-       * share of the weights' forces) plus the change of its springs'
-       * energy, written to stderr for the steps where a share or the
-       * pair's error moved by more than 0.02 J. The state of the last
-       * accepted evaluation.
+       * its traction's forces (the normal and the tangential part through
+       * its rows of the segments, and its share of the weights' forces)
+       * plus the change of its normal and tangential springs' energy plus
+       * friction's dissipation at it. Summed over
+       * RUBBERDYN_PAIR_TRACE_EVERY steps and written to stderr with the
+       * largest nodes; single steps where a share or the pair's error
+       * moved by more than 0.02 J are written at once. The state of the
+       * last accepted evaluation and the sums since the last report.
        */
       struct Trace
       {
@@ -627,9 +630,30 @@ namespace rubberdyn
         std::vector<Point<3>>                   x;
         std::vector<std::vector<StoredSegment>> segments;
         std::vector<Tensor<1, 3>>               traction, normal;
-        std::vector<double>                     energy, area, gap, penalty;
+        std::vector<double>                     area, gap, penalty;
         std::vector<unsigned int>               n_segments;
         double                                  error = 0.;
+        /** Friction's dissipation of the last evaluation, by node (J). */
+        std::vector<double> dissipation;
+        /** Whether each node slipped in the last evaluation. */
+        std::vector<char> slipping;
+        /**
+         * Each node's shares of the error since the last report (J): the
+         * work of the normal part of its segments' tractions, of their
+         * tangential part, of the weights' forces, the change of the
+         * normal and of the tangential springs' energy, and friction's
+         * dissipation.
+         */
+        std::vector<double> work_normal, work_tangential, work_weight,
+          normal_energy_change, tangential_energy_change, dissipated;
+        /** Its normal and tangential springs' energy (J). */
+        std::vector<double> normal_energy, tangential_energy;
+        /** Accepted steps since the last report, and the pair's error
+         * there (J). */
+        unsigned int steps_since_report = 0;
+        double       error_at_report    = 0.;
+        /** Steps between reports (RUBBERDYN_PAIR_TRACE_EVERY). */
+        unsigned int report_every = 1000;
       };
       Trace trace;
 

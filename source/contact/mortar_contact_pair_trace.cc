@@ -10,9 +10,15 @@
 // energy a node's share of the step's error is
 //   delta_a = (W_a(old state) + W_a(new state)) / 2 + E_a(new) - E_a(old),
 // W_a(state) the work of node a's forces of that state over the step's
-// displacements. The shares sum to the pair's error increment, up to
-// friction's dissipation and the penalty updates' energy, which the trace
-// leaves out.
+// displacements, plus friction's dissipation at the node. The shares sum
+// to the pair's error increment up to the penalty updates' energy, which
+// the trace leaves out. The work splits into the normal part of the
+// segments' tractions (WN), their tangential part (WT) and the weights'
+// forces (Ww), the energy into the normal (EN) and the tangential springs
+// (ET): a conservative normal part has WN = -dEN, a consistent friction
+// WT + dET + D = 0. Every RUBBERDYN_PAIR_TRACE_EVERY accepted steps
+// (default 1000) the shares summed since the last report are written, with
+// the largest nodes' and the two largest nodes' segments.
 #include <rubberdyn/contact/mortar_contact_pair.h>
 
 #include <algorithm>
@@ -31,7 +37,8 @@ namespace rubberdyn
     {
       const unsigned int n = x.size();
       // This evaluation's springs' energy and mean gap per node.
-      std::vector<double> energy_now(n, 0.), gap_now(n, 0.), penalty_now(n, 0.);
+      std::vector<double> normal_now(n, 0.), tangential_now(n, 0.),
+        gap_now(n, 0.), penalty_now(n, 0.);
       for (const Pass &pass : passes)
         for (const unsigned int node : pass.nodes)
           {
@@ -40,20 +47,30 @@ namespace rubberdyn
             gap_now[node]     = g;
             penalty_now[node] = pass.penalty;
             if (A > 0. && g < 0.)
-              energy_now[node] += 0.5 * pass.penalty * A * g * g;
+              normal_now[node] += 0.5 * pass.penalty * A * g * g;
             if (coulomb)
-              energy_now[node] += pass.trial_spring_energy[node];
+              tangential_now[node] += pass.trial_spring_energy[node];
           }
       std::vector<unsigned int> n_segments(n, 0);
       for (const Pass &pass : passes)
         for (const StoredSegment &s : pass.segments)
           for (const unsigned int node : facet_nodes[pass.gap_facets[s.slave]])
             ++n_segments[node];
+      if (trace.work_normal.size() != n)
+        for (auto *v : {&trace.work_normal,
+                        &trace.work_tangential,
+                        &trace.work_weight,
+                        &trace.normal_energy_change,
+                        &trace.tangential_energy_change,
+                        &trace.dissipated})
+          v->assign(n, 0.);
 
       if (trace.have_old)
         {
-          // W_a of a state (its segments, positions, tractions, normals,
-          // gaps and penalties) over the step's displacements.
+          // A state's (its segments, positions, tractions, normals, gaps
+          // and penalties) work over the step's displacements, by node:
+          // the normal and the tangential part of its segments'
+          // tractions, and its share of the weights' forces.
           const auto work = [&](const std::vector<StoredSegment> &segments,
                                 const Pass                       &pass,
                                 const std::vector<Point<3>>      &at,
@@ -61,7 +78,9 @@ namespace rubberdyn
                                 const std::vector<Tensor<1, 3>>  &normals,
                                 const std::vector<double>        &gaps,
                                 const std::vector<double>        &penalties,
-                                std::vector<double>              &W) {
+                                std::vector<double>              &W_normal,
+                                std::vector<double>              &W_tangential,
+                                std::vector<double>              &W_weight) {
             for (const StoredSegment &s : segments)
               {
                 const auto &sn = facet_nodes[pass.gap_facets[s.slave]];
@@ -90,24 +109,34 @@ namespace rubberdyn
                       }
                     const double g = gaps[node];
                     const double p = g < 0. ? -penalties[node] * g : 0.;
-                    // The segment's traction (add_forces()).
-                    W[node] += s.weight * (segment_traction(t[node],
-                                                            p,
-                                                            normals[node],
-                                                            s.integrals.normal,
-                                                            s.integrals.slope) *
-                                           displacement);
+                    if (t[node].norm_square() == 0.)
+                      continue;
+                    // The segment's traction (add_forces()) and its
+                    // tangential part (the node's traction's).
+                    const Tensor<1, 3> full =
+                      segment_traction(t[node],
+                                       p,
+                                       normals[node],
+                                       s.integrals.normal,
+                                       s.integrals.slope);
+                    const Tensor<1, 3> tangential = t[node] + p * normals[node];
+                    W_tangential[node] +=
+                      s.weight * (tangential * displacement);
+                    W_normal[node] +=
+                      s.weight * ((full - tangential) * displacement);
                     if (weight_change != 0. && g < 0.)
-                      W[node] -= spring_energy_weight_derivative(p,
-                                                                 g,
-                                                                 normals[node],
-                                                                 row_gap,
-                                                                 row_area) *
-                                 weight_change;
+                      W_weight[node] -=
+                        spring_energy_weight_derivative(p,
+                                                        g,
+                                                        normals[node],
+                                                        row_gap,
+                                                        row_area) *
+                        weight_change;
                   }
               }
           };
-          std::vector<double> W_old(n, 0.), W_new(n, 0.);
+          std::vector<double> WN_old(n, 0.), WN_new(n, 0.), WT_old(n, 0.),
+            WT_new(n, 0.), WW_old(n, 0.), WW_new(n, 0.);
           for (unsigned int p = 0; p < passes.size(); ++p)
             {
               work(passes[p].segments,
@@ -117,7 +146,9 @@ namespace rubberdyn
                    normal,
                    gap_now,
                    penalty_now,
-                   W_new);
+                   WN_new,
+                   WT_new,
+                   WW_new);
               work(trace.segments[p],
                    passes[p],
                    trace.x,
@@ -125,14 +156,28 @@ namespace rubberdyn
                    trace.normal,
                    trace.gap,
                    trace.penalty,
-                   W_old);
+                   WN_old,
+                   WT_old,
+                   WW_old);
             }
           std::vector<std::pair<double, unsigned int>> shares;
           double                                       sum = 0.;
           for (unsigned int a = 0; a < n; ++a)
             {
-              const double delta =
-                0.5 * (W_old[a] + W_new[a]) + energy_now[a] - trace.energy[a];
+              const double WN  = 0.5 * (WN_old[a] + WN_new[a]),
+                           WT  = 0.5 * (WT_old[a] + WT_new[a]),
+                           WW  = 0.5 * (WW_old[a] + WW_new[a]),
+                           dEN = normal_now[a] - trace.normal_energy[a],
+                           dET = tangential_now[a] - trace.tangential_energy[a],
+                           D   = trace.dissipation.empty() ? 0. :
+                                                             trace.dissipation[a];
+              trace.work_normal[a] += WN;
+              trace.work_tangential[a] += WT;
+              trace.work_weight[a] += WW;
+              trace.normal_energy_change[a] += dEN;
+              trace.tangential_energy_change[a] += dET;
+              trace.dissipated[a] += D;
+              const double delta = WN + WT + WW + dEN + dET + D;
               sum += delta;
               if (delta != 0.)
                 shares.emplace_back(delta, a);
@@ -143,56 +188,164 @@ namespace rubberdyn
           const double increment = error_now - trace.error;
           if (std::abs(increment) > 0.02 ||
               (!shares.empty() && std::abs(shares[0].first) > 0.02))
+            std::fprintf(stderr,
+                         "TRACE %s t=%.5f jump inc=%.4f sum=%.4f node %u\n",
+                         definition.name.c_str(),
+                         trial_time,
+                         increment,
+                         sum,
+                         shares.empty() ? 0u : shares[0].second);
+          if (++trace.steps_since_report >= trace.report_every)
             {
-              std::fprintf(stderr,
-                           "TRACE %s t=%.5f inc=%.4f sum=%.4f\n",
-                           definition.name.c_str(),
-                           trial_time,
-                           increment,
-                           sum);
+              // The nodes with the largest shares since the last report,
+              // and the split of the pair's sum.
+              std::vector<std::pair<double, unsigned int>> largest;
+              double totals[6] = {0., 0., 0., 0., 0., 0.};
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  const double parts[6] = {trace.work_normal[a],
+                                           trace.work_tangential[a],
+                                           trace.work_weight[a],
+                                           trace.normal_energy_change[a],
+                                           trace.tangential_energy_change[a],
+                                           trace.dissipated[a]};
+                  double       delta    = 0.;
+                  for (unsigned int k = 0; k < 6; ++k)
+                    {
+                      totals[k] += parts[k];
+                      delta += parts[k];
+                    }
+                  if (delta != 0.)
+                    largest.emplace_back(delta, a);
+                }
+              std::sort(largest.begin(), largest.end(), [](auto &l, auto &r) {
+                return std::abs(l.first) > std::abs(r.first);
+              });
+              std::fprintf(
+                stderr,
+                "TRACE %s t=%.5f steps=%u error %+.4f (inc %+.4f) nodes' sum "
+                "%+.4f = WN %+.4f WT %+.4f Ww %+.4f dEN %+.4f dET %+.4f D "
+                "%+.4f\n",
+                definition.name.c_str(),
+                trial_time,
+                trace.steps_since_report,
+                error_now,
+                error_now - trace.error_at_report,
+                totals[0] + totals[1] + totals[2] + totals[3] + totals[4] +
+                  totals[5],
+                totals[0],
+                totals[1],
+                totals[2],
+                totals[3],
+                totals[4],
+                totals[5]);
               for (unsigned int k = 0;
-                   k < std::min<std::size_t>(5, shares.size());
+                   k < std::min<std::size_t>(8, largest.size());
                    ++k)
                 {
-                  const unsigned int a = shares[k].second;
+                  const unsigned int a = largest[k].second;
                   std::fprintf(
                     stderr,
-                    "  node %u x=(%.3f %.3f %.3f) d=%.4f A=%.3f->%.3f "
-                    "g=%.5f->%.5f nseg=%u->%u E=%.4f->%.4f W=%.4f,%.4f "
-                    "|t|=%.4f->%.4f\n",
+                    "  node %u x=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f) d=%+.4f "
+                    "WN %+.4f WT %+.4f Ww %+.4f dEN %+.4f dET %+.4f D %+.4f "
+                    "g=%.4f A=%.3f nseg=%u slip=%d |t|=%.4f\n",
                     a,
                     x[a][0],
                     x[a][1],
                     x[a][2],
-                    shares[k].first,
-                    trace.area[a],
-                    area[a],
-                    trace.gap[a],
+                    normal[a][0],
+                    normal[a][1],
+                    normal[a][2],
+                    largest[k].first,
+                    trace.work_normal[a],
+                    trace.work_tangential[a],
+                    trace.work_weight[a],
+                    trace.normal_energy_change[a],
+                    trace.tangential_energy_change[a],
+                    trace.dissipated[a],
                     gap_now[a],
-                    trace.n_segments[a],
+                    area[a],
                     n_segments[a],
-                    trace.energy[a],
-                    energy_now[a],
-                    W_old[a],
-                    W_new[a],
-                    trace.traction[a].norm(),
+                    trace.slipping.empty() ? 0 : int(trace.slipping[a]),
                     traction[a].norm());
+                  if (k >= 2)
+                    continue;
+                  // The two largest shares' segments: weight, the node's
+                  // row of the covered area, the slave plane's normal n0,
+                  // the master facet's normal m (from its diagonals), the
+                  // slope in the forces and the slope of a flat master
+                  // facet with normal m, -(m - (m.n0) n0) / (m.n0): where
+                  // they differ, the slope was limited (max_mortar_slope)
+                  // or the facet is warped.
+                  for (const Pass &pass : passes)
+                    for (const StoredSegment &s : pass.segments)
+                      {
+                        const auto  &sn = facet_nodes[pass.gap_facets[s.slave]];
+                        unsigned int row = 4;
+                        for (unsigned int c = 0; c < 4; ++c)
+                          if (sn[c] == a)
+                            row = c;
+                        if (row == 4)
+                          continue;
+                        const auto  &mn = facet_nodes[s.master];
+                        Tensor<1, 3> m  = cross_product_3d(x[mn[2]] - x[mn[0]],
+                                                          x[mn[3]] - x[mn[1]]);
+                        m /= m.norm();
+                        const Tensor<1, 3> n0 = s.integrals.normal;
+                        const Tensor<1, 3> flat_slope =
+                          -(m - (m * n0) * n0) / (m * n0);
+                        double row_area = 0.;
+                        for (unsigned int b = 0; b < 4; ++b)
+                          row_area += s.integrals.D[row][b];
+                        std::fprintf(stderr,
+                                     "    segment master %u w=%.3f A_row=%.3f "
+                                     "n0=(%.3f %.3f %.3f) m=(%.3f %.3f %.3f) "
+                                     "slope=(%.3f %.3f %.3f) "
+                                     "flat=(%.3f %.3f %.3f)\n",
+                                     s.master,
+                                     s.weight,
+                                     row_area,
+                                     n0[0],
+                                     n0[1],
+                                     n0[2],
+                                     m[0],
+                                     m[1],
+                                     m[2],
+                                     s.integrals.slope[0],
+                                     s.integrals.slope[1],
+                                     s.integrals.slope[2],
+                                     flat_slope[0],
+                                     flat_slope[1],
+                                     flat_slope[2]);
+                      }
                 }
+              for (auto *v : {&trace.work_normal,
+                              &trace.work_tangential,
+                              &trace.work_weight,
+                              &trace.normal_energy_change,
+                              &trace.tangential_energy_change,
+                              &trace.dissipated})
+                std::fill(v->begin(), v->end(), 0.);
+              trace.steps_since_report = 0;
+              trace.error_at_report    = error_now;
             }
         }
+      else
+        trace.error_at_report = error_now;
       trace.have_old = true;
       trace.x        = x;
       trace.segments.resize(passes.size());
       for (unsigned int p = 0; p < passes.size(); ++p)
         trace.segments[p] = passes[p].segments;
-      trace.traction   = traction;
-      trace.normal     = normal;
-      trace.energy     = std::move(energy_now);
-      trace.area       = area;
-      trace.gap        = std::move(gap_now);
-      trace.penalty    = std::move(penalty_now);
-      trace.n_segments = std::move(n_segments);
-      trace.error      = error_now;
+      trace.traction          = traction;
+      trace.normal            = normal;
+      trace.normal_energy     = std::move(normal_now);
+      trace.tangential_energy = std::move(tangential_now);
+      trace.area              = area;
+      trace.gap               = std::move(gap_now);
+      trace.penalty           = std::move(penalty_now);
+      trace.n_segments        = std::move(n_segments);
+      trace.error             = error_now;
     }
   } // namespace contact
 } // namespace rubberdyn
