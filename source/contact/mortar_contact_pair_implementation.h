@@ -654,6 +654,19 @@ namespace rubberdyn
         double       error_at_report    = 0.;
         /** Steps between reports (RUBBERDYN_PAIR_TRACE_EVERY). */
         unsigned int report_every = 1000;
+
+        /** The shares' sums set to zero for @p n nodes. */
+        void
+        clear_sums(const unsigned int n)
+        {
+          for (std::vector<double> *sums : {&work_normal,
+                                            &work_tangential,
+                                            &work_weight,
+                                            &normal_energy_change,
+                                            &tangential_energy_change,
+                                            &dissipated})
+            sums->assign(n, 0.);
+        }
       };
       Trace trace;
 

@@ -57,13 +57,7 @@ namespace rubberdyn
           for (const unsigned int node : facet_nodes[pass.gap_facets[s.slave]])
             ++n_segments[node];
       if (trace.work_normal.size() != n)
-        for (auto *v : {&trace.work_normal,
-                        &trace.work_tangential,
-                        &trace.work_weight,
-                        &trace.normal_energy_change,
-                        &trace.tangential_energy_change,
-                        &trace.dissipated})
-          v->assign(n, 0.);
+        trace.clear_sums(n);
 
       if (trace.have_old)
         {
@@ -319,13 +313,7 @@ namespace rubberdyn
                                      flat_slope[2]);
                       }
                 }
-              for (auto *v : {&trace.work_normal,
-                              &trace.work_tangential,
-                              &trace.work_weight,
-                              &trace.normal_energy_change,
-                              &trace.tangential_energy_change,
-                              &trace.dissipated})
-                std::fill(v->begin(), v->end(), 0.);
+              trace.clear_sums(n);
               trace.steps_since_report = 0;
               trace.error_at_report    = error_now;
             }
