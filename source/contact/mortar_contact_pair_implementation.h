@@ -630,22 +630,23 @@ namespace rubberdyn
         std::vector<Point<3>>                   x;
         std::vector<std::vector<StoredSegment>> segments;
         std::vector<Tensor<1, 3>>               traction, normal;
-        std::vector<double>                     area, gap, penalty;
-        std::vector<unsigned int>               n_segments;
+        std::vector<double>                     gap, penalty;
         double                                  error = 0.;
         /** Friction's dissipation of the last evaluation, by node (J). */
         std::vector<double> dissipation;
         /** Whether each node slipped in the last evaluation. */
         std::vector<char> slipping;
         /**
-         * Each node's shares of the error since the last report (J): the
-         * work of the normal part of its segments' tractions, of their
-         * tangential part, of the weights' forces, the change of the
-         * normal and of the tangential springs' energy, and friction's
-         * dissipation.
+         * Each node's shares of the error since the last report (J), by
+         * share_labels: the work of the normal part of its segments'
+         * tractions, of their tangential part, of the weights' forces, the
+         * change of the normal and of the tangential springs' energy, and
+         * friction's dissipation.
          */
-        std::vector<double> work_normal, work_tangential, work_weight,
-          normal_energy_change, tangential_energy_change, dissipated;
+        static constexpr unsigned int n_shares = 6;
+        static constexpr const char  *share_labels[n_shares] =
+          {"WN", "WT", "Ww", "dEN", "dET", "D"};
+        std::vector<std::array<double, n_shares>> shares_since_report;
         /** Its normal and tangential springs' energy (J). */
         std::vector<double> normal_energy, tangential_energy;
         /** Accepted steps since the last report, and the pair's error
@@ -654,19 +655,6 @@ namespace rubberdyn
         double       error_at_report    = 0.;
         /** Steps between reports (RUBBERDYN_PAIR_TRACE_EVERY). */
         unsigned int report_every = 1000;
-
-        /** The shares' sums set to zero for @p n nodes. */
-        void
-        clear_sums(const unsigned int n)
-        {
-          for (std::vector<double> *sums : {&work_normal,
-                                            &work_tangential,
-                                            &work_weight,
-                                            &normal_energy_change,
-                                            &tangential_energy_change,
-                                            &dissipated})
-            sums->assign(n, 0.);
-        }
       };
       Trace trace;
 

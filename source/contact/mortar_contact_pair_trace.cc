@@ -22,6 +22,7 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -51,13 +52,8 @@ namespace rubberdyn
             if (coulomb)
               tangential_now[node] += pass.trial_spring_energy[node];
           }
-      std::vector<unsigned int> n_segments(n, 0);
-      for (const Pass &pass : passes)
-        for (const StoredSegment &s : pass.segments)
-          for (const unsigned int node : facet_nodes[pass.gap_facets[s.slave]])
-            ++n_segments[node];
-      if (trace.work_normal.size() != n)
-        trace.clear_sums(n);
+      if (trace.shares_since_report.size() != n)
+        trace.shares_since_report.assign(n, {});
 
       if (trace.have_old)
         {
@@ -154,85 +150,87 @@ namespace rubberdyn
                    WT_old,
                    WW_old);
             }
-          std::vector<std::pair<double, unsigned int>> shares;
-          double                                       sum = 0.;
+          // The step's shares; the largest one for the jump line.
+          double       sum = 0., largest_share = 0.;
+          unsigned int largest_node = 0;
           for (unsigned int a = 0; a < n; ++a)
             {
-              const double WN  = 0.5 * (WN_old[a] + WN_new[a]),
-                           WT  = 0.5 * (WT_old[a] + WT_new[a]),
-                           WW  = 0.5 * (WW_old[a] + WW_new[a]),
-                           dEN = normal_now[a] - trace.normal_energy[a],
-                           dET = tangential_now[a] - trace.tangential_energy[a],
-                           D   = trace.dissipation.empty() ? 0. :
-                                                             trace.dissipation[a];
-              trace.work_normal[a] += WN;
-              trace.work_tangential[a] += WT;
-              trace.work_weight[a] += WW;
-              trace.normal_energy_change[a] += dEN;
-              trace.tangential_energy_change[a] += dET;
-              trace.dissipated[a] += D;
-              const double delta = WN + WT + WW + dEN + dET + D;
+              const std::array<double, Trace::n_shares> step_shares = {
+                {0.5 * (WN_old[a] + WN_new[a]),
+                 0.5 * (WT_old[a] + WT_new[a]),
+                 0.5 * (WW_old[a] + WW_new[a]),
+                 normal_now[a] - trace.normal_energy[a],
+                 tangential_now[a] - trace.tangential_energy[a],
+                 trace.dissipation.empty() ? 0. : trace.dissipation[a]}};
+              double delta = 0.;
+              for (unsigned int k = 0; k < Trace::n_shares; ++k)
+                {
+                  trace.shares_since_report[a][k] += step_shares[k];
+                  delta += step_shares[k];
+                }
               sum += delta;
-              if (delta != 0.)
-                shares.emplace_back(delta, a);
+              if (std::abs(delta) > std::abs(largest_share))
+                {
+                  largest_share = delta;
+                  largest_node  = a;
+                }
             }
-          std::sort(shares.begin(), shares.end(), [](auto &l, auto &r) {
-            return std::abs(l.first) > std::abs(r.first);
-          });
           const double increment = error_now - trace.error;
-          if (std::abs(increment) > 0.02 ||
-              (!shares.empty() && std::abs(shares[0].first) > 0.02))
+          if (std::abs(increment) > 0.02 || std::abs(largest_share) > 0.02)
             std::fprintf(stderr,
                          "TRACE %s t=%.5f jump inc=%.4f sum=%.4f node %u\n",
                          definition.name.c_str(),
                          trial_time,
                          increment,
                          sum,
-                         shares.empty() ? 0u : shares[0].second);
+                         largest_node);
           if (++trace.steps_since_report >= trace.report_every)
             {
               // The nodes with the largest shares since the last report,
               // and the split of the pair's sum.
+              const auto print_shares =
+                [](const std::array<double, Trace::n_shares> &shares) {
+                  for (unsigned int k = 0; k < Trace::n_shares; ++k)
+                    std::fprintf(stderr,
+                                 " %s %+.4f",
+                                 Trace::share_labels[k],
+                                 shares[k]);
+                };
               std::vector<std::pair<double, unsigned int>> largest;
-              double totals[6] = {0., 0., 0., 0., 0., 0.};
+              std::array<double, Trace::n_shares>          totals = {};
+              double                                       total  = 0.;
               for (unsigned int a = 0; a < n; ++a)
                 {
-                  const double parts[6] = {trace.work_normal[a],
-                                           trace.work_tangential[a],
-                                           trace.work_weight[a],
-                                           trace.normal_energy_change[a],
-                                           trace.tangential_energy_change[a],
-                                           trace.dissipated[a]};
-                  double       delta    = 0.;
-                  for (unsigned int k = 0; k < 6; ++k)
+                  double delta = 0.;
+                  for (unsigned int k = 0; k < Trace::n_shares; ++k)
                     {
-                      totals[k] += parts[k];
-                      delta += parts[k];
+                      totals[k] += trace.shares_since_report[a][k];
+                      delta += trace.shares_since_report[a][k];
                     }
+                  total += delta;
                   if (delta != 0.)
                     largest.emplace_back(delta, a);
                 }
               std::sort(largest.begin(), largest.end(), [](auto &l, auto &r) {
                 return std::abs(l.first) > std::abs(r.first);
               });
-              std::fprintf(
-                stderr,
-                "TRACE %s t=%.5f steps=%u error %+.4f (inc %+.4f) nodes' sum "
-                "%+.4f = WN %+.4f WT %+.4f Ww %+.4f dEN %+.4f dET %+.4f D "
-                "%+.4f\n",
-                definition.name.c_str(),
-                trial_time,
-                trace.steps_since_report,
-                error_now,
-                error_now - trace.error_at_report,
-                totals[0] + totals[1] + totals[2] + totals[3] + totals[4] +
-                  totals[5],
-                totals[0],
-                totals[1],
-                totals[2],
-                totals[3],
-                totals[4],
-                totals[5]);
+              std::vector<unsigned int> n_segments(n, 0);
+              for (const Pass &pass : passes)
+                for (const StoredSegment &s : pass.segments)
+                  for (const unsigned int node :
+                       facet_nodes[pass.gap_facets[s.slave]])
+                    ++n_segments[node];
+              std::fprintf(stderr,
+                           "TRACE %s t=%.5f steps=%u error %+.4f (inc %+.4f) "
+                           "nodes' sum %+.4f =",
+                           definition.name.c_str(),
+                           trial_time,
+                           trace.steps_since_report,
+                           error_now,
+                           error_now - trace.error_at_report,
+                           total);
+              print_shares(totals);
+              std::fprintf(stderr, "\n");
               for (unsigned int k = 0;
                    k < std::min<std::size_t>(8, largest.size());
                    ++k)
@@ -240,9 +238,8 @@ namespace rubberdyn
                   const unsigned int a = largest[k].second;
                   std::fprintf(
                     stderr,
-                    "  node %u x=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f) d=%+.4f "
-                    "WN %+.4f WT %+.4f Ww %+.4f dEN %+.4f dET %+.4f D %+.4f "
-                    "g=%.4f A=%.3f nseg=%u slip=%d |t|=%.4f\n",
+                    "  node %u x=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f) "
+                    "d=%+.4f",
                     a,
                     x[a][0],
                     x[a][1],
@@ -250,18 +247,16 @@ namespace rubberdyn
                     normal[a][0],
                     normal[a][1],
                     normal[a][2],
-                    largest[k].first,
-                    trace.work_normal[a],
-                    trace.work_tangential[a],
-                    trace.work_weight[a],
-                    trace.normal_energy_change[a],
-                    trace.tangential_energy_change[a],
-                    trace.dissipated[a],
-                    gap_now[a],
-                    area[a],
-                    n_segments[a],
-                    trace.slipping.empty() ? 0 : int(trace.slipping[a]),
-                    traction[a].norm());
+                    largest[k].first);
+                  print_shares(trace.shares_since_report[a]);
+                  std::fprintf(stderr,
+                               " g=%.4f A=%.3f nseg=%u slip=%d |t|=%.4f\n",
+                               gap_now[a],
+                               area[a],
+                               n_segments[a],
+                               trace.slipping.empty() ? 0 :
+                                                        int(trace.slipping[a]),
+                               traction[a].norm());
                   if (k >= 2)
                     continue;
                   // The two largest shares' segments: weight, the node's
@@ -313,7 +308,7 @@ namespace rubberdyn
                                      flat_slope[2]);
                       }
                 }
-              trace.clear_sums(n);
+              trace.shares_since_report.assign(n, {});
               trace.steps_since_report = 0;
               trace.error_at_report    = error_now;
             }
@@ -329,10 +324,8 @@ namespace rubberdyn
       trace.normal            = normal;
       trace.normal_energy     = std::move(normal_now);
       trace.tangential_energy = std::move(tangential_now);
-      trace.area              = area;
       trace.gap               = std::move(gap_now);
       trace.penalty           = std::move(penalty_now);
-      trace.n_segments        = std::move(n_segments);
       trace.error             = error_now;
     }
   } // namespace contact
