@@ -787,8 +787,7 @@ namespace rubberdyn
         }
       if (!output.history_nodes.empty())
         add_postprocessor(std::make_unique<postprocess::HistoryNodeColumns>(
-          std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
-                                                      model.partitioner,
+          std::make_unique<postprocess::HistoryNodes>(model,
                                                       output.history_nodes)));
     }
 

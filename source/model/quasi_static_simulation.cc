@@ -238,8 +238,7 @@ namespace rubberdyn
           contributions.push_back(contact_pairs.back().get());
         }
       history_nodes =
-        std::make_unique<postprocess::HistoryNodes>(model.dof_handler,
-                                                    model.partitioner,
+        std::make_unique<postprocess::HistoryNodes>(model,
                                                     output.history_nodes);
       newton = std::make_unique<time_integration::QuasiStaticSolver>(
         model.dof_handler,

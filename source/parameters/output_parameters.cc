@@ -68,8 +68,11 @@ namespace rubberdyn
         "*DATABASE_HISTORY_NODE): 'name: x, y, z' entries separated by ';', "
         "the point in the reference configuration (mm); each adds the "
         "columns <name>_displacement_x, _y, _z (mm). A node of the mesh must "
-        "lie at the point (within 1e-6 of the mesh's size); names are "
-        "letters, digits and '_'. Empty: none.");
+        "lie at the point (within 1e-6 of the mesh's size); where touching "
+        "parts have nodes of their own at the same point, 'name: x, y, z in "
+        "part' names the part whose node is meant (a point that is a node of "
+        "two parts is refused without it). Names are letters, digits and "
+        "'_'. Empty: none.");
       prm.declare_entry(
         "History expressions",
         "",
@@ -159,11 +162,27 @@ namespace rubberdyn
     {
       const std::string        path = "Output/History nodes";
       std::vector<HistoryNode> nodes;
-      for (const auto &[name, point] :
-           named_entries(text, path, "name: x, y, z"))
+      for (const auto &[name, entry] :
+           named_entries(text, path, "name: x, y, z [in part]"))
         {
           HistoryNode node;
           node.name = name;
+          // 'x, y, z in part': the part is the word after " in ".
+          std::string       point = entry;
+          const std::size_t in    = entry.find(" in ");
+          if (in != std::string::npos)
+            {
+              point     = Utilities::trim(entry.substr(0, in));
+              node.part = Utilities::trim(entry.substr(in + 4));
+              if (node.part.empty() ||
+                  node.part.find_first_not_of(
+                    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                    "0123456789_") != std::string::npos)
+                throw InputError(path,
+                                 "what follows 'in' in the entry of '" +
+                                   node.name + "' ('" + node.part +
+                                   "') must be the name of a part");
+            }
           const std::vector<std::string> coordinates =
             Utilities::split_string_list(point, ',');
           if (coordinates.size() != 3)

@@ -48,6 +48,12 @@ namespace rubberdyn
         std::string name;
         /** Its position in the reference configuration (mm). */
         std::array<double, 3> point;
+        /**
+         * The part whose node it is ('x, y, z in part'), for a point where
+         * touching parts have nodes of their own; empty: any part, and the
+         * point must then be a node of one part only.
+         */
+        std::string part;
       };
       /** `History nodes`, in the order given. */
       std::vector<HistoryNode> history_nodes;
@@ -66,11 +72,12 @@ namespace rubberdyn
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * The entries of `History nodes` ('name: x, y, z; ...').
+       * The entries of `History nodes` ('name: x, y, z [in part]; ...').
        *
        * @throws InputError naming `Output/History nodes` for an entry that
        *   is not of that form, a name that is not letters, digits and '_' or
-       *   is given twice, or a coordinate that is not a finite number.
+       *   is given twice, a coordinate that is not a finite number, or a
+       *   part after 'in' that is not a name.
        */
       static std::vector<HistoryNode>
       parse_history_nodes(const std::string &text);

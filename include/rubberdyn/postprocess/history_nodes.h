@@ -12,14 +12,13 @@
 #include <string>
 #include <vector>
 
-namespace dealii
-{
-  template <int dim, int spacedim>
-  class DoFHandler;
-}
-
 namespace rubberdyn
 {
+  namespace model
+  {
+    class Model;
+  }
+
   namespace postprocess
   {
     /**
@@ -28,25 +27,29 @@ namespace rubberdyn
      * `<name>_displacement_x`, `_y`, `_z` (mm). Each point must coincide
      * with a mesh vertex (within 1e-6 of the mesh's bounding-box diagonal):
      * a history of "the nearest node" would silently follow another point
-     * than the user meant. Used by every scheme: the explicit run through
+     * than the user meant. Where touching parts have nodes of their own at
+     * the same point (a sleeve's end on a brace), the node names its part;
+     * without one such a point is refused, not given to whichever part
+     * comes first. Used by every scheme: the explicit run through
      * HistoryNodeColumns, the quasi-static run directly.
      */
     class HistoryNodes
     {
     public:
       /**
-       * Find the vertex of each node among the locally owned cells, and the
-       * rank that owns its dofs.
+       * Find the vertex of each node among the locally owned cells of the
+       * model (of its part, if it names one), and the rank that owns its
+       * dofs.
        *
        * @throws InputError naming `Output/History nodes` and the node if no
-       *   vertex of the mesh lies at its point (with the distance to the
-       *   nearest one and where it is).
+       *   vertex of the mesh (of the part) lies at its point (with the
+       *   distance to the nearest one and where it is), if the point is a
+       *   vertex of two nodes (parts with nodes of their own there; the
+       *   message names the parts), or if its part is not one of the
+       *   model's.
        */
-      HistoryNodes(
-        const dealii::DoFHandler<3, 3> &dof_handler,
-        const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
-                                                           &partitioner,
-        const std::vector<parameters::Output::HistoryNode> &nodes);
+      HistoryNodes(const model::Model                                 &model,
+                   const std::vector<parameters::Output::HistoryNode> &nodes);
 
       /** The columns, three per node. */
       std::vector<std::string>
