@@ -114,6 +114,21 @@ namespace rubberdyn
     namespace
     {
       /**
+       * Whether @p word is a name of a column or a part: letters, digits
+       * and '_', not empty.
+       */
+      bool
+      is_name(const std::string &word)
+      {
+        return !word.empty() &&
+               word.find_first_not_of(
+                 "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                 "0123456789_") == std::string::npos;
+      }
+
+
+
+      /**
        * The 'name: rest' entries of @p text, separated by ';', as pairs
        * of the trimmed name and the trimmed rest (what follows the first
        * ':'), for `History nodes` and `History expressions` alike.
@@ -136,10 +151,7 @@ namespace rubberdyn
                                "the entry '" + entry +
                                  "' is not of the form '" + form + "'");
             const std::string name = Utilities::trim(entry.substr(0, colon));
-            if (name.empty() ||
-                name.find_first_not_of(
-                  "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                  "0123456789_") != std::string::npos)
+            if (!is_name(name))
               throw InputError(path,
                                "the name '" + name + "' of the entry '" +
                                  entry +
@@ -174,10 +186,7 @@ namespace rubberdyn
             {
               point     = Utilities::trim(entry.substr(0, in));
               node.part = Utilities::trim(entry.substr(in + 4));
-              if (node.part.empty() ||
-                  node.part.find_first_not_of(
-                    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                    "0123456789_") != std::string::npos)
+              if (!is_name(node.part))
                 throw InputError(path,
                                  "what follows 'in' in the entry of '" +
                                    node.name + "' ('" + node.part +

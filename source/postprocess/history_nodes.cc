@@ -60,18 +60,20 @@ namespace rubberdyn
           std::string    of_part;
           if (!node.part.empty())
             {
-              std::string names;
-              for (const model::Part &p : model.parts)
-                names += (names.empty() ? "" : ", ") + p.name;
               for (unsigned int p = 0; p < model.parts.size(); ++p)
                 if (model.parts[p].name == node.part)
                   part = p;
               if (part == numbers::invalid_unsigned_int)
-                throw InputError(
-                  path,
-                  "the part '" + node.part + "' of '" + node.name +
-                    "' is not a part of the model (Parts/Names: " + names +
-                    ")");
+                {
+                  std::string names;
+                  for (const model::Part &p : model.parts)
+                    names += (names.empty() ? "" : ", ") + p.name;
+                  throw InputError(
+                    path,
+                    "the part '" + node.part + "' of '" + node.name +
+                      "' is not a part of the model (Parts/Names: " + names +
+                      ")");
+                }
               of_part = " of the part '" + node.part + "'";
             }
           // The nearest vertex of the owned cells (of the part), its dofs,
