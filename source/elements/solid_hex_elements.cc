@@ -54,13 +54,22 @@ namespace rubberdyn
               "SolidHexElements: element group " + std::to_string(g) +
               " is of the mixed u-p formulation (MixedUPElements)");
           const bool fbar = (group.formulation == Formulation::fbar);
-          groups.push_back(
-            {group.law,
-             group.formulation,
-             materials::create_stress_kernel(*group.law),
-             group.law->density(),
-             fbar ? settings.fbar_stabilization * group.law->bulk_modulus() :
-                    0.});
+          if (group.fbar_stabilization && !fbar)
+            throw std::invalid_argument(
+              "SolidHexElements: element group " + std::to_string(g) +
+              " has an F-bar stabilization but is not of the F-bar "
+              "formulation");
+          const double stabilization =
+            fbar ?
+              group.fbar_stabilization.value_or(settings.fbar_stabilization) :
+              0.;
+          groups.push_back({group.law,
+                            group.formulation,
+                            materials::create_stress_kernel(*group.law),
+                            group.law->density(),
+                            stabilization,
+                            stabilization * group.law->bulk_modulus(),
+                            group.fbar_stabilization_entry});
         }
 
       const FiniteElement<3> &fe = dof_handler.get_fe();

@@ -449,7 +449,9 @@ namespace rubberdyn
       std::string
       failure_message(const FailureKind      kind,
                       const double           volume_ratio,
-                      const ElementSettings &settings)
+                      const ElementSettings &settings,
+                      const double           stabilization,
+                      const std::string     &stabilization_entry)
       {
         const auto number = [](const double x) {
           std::ostringstream s;
@@ -470,11 +472,10 @@ namespace rubberdyn
                      number(volume_ratio) + " of the element centre's (limit " +
                      number(settings.fbar_collapse_ratio) +
                      "), the results are no longer physical; " +
-                     (settings.fbar_stabilization < 0.03 ?
-                        std::string("set Time integration/F-bar "
-                                    "stabilization to 0.03 or more") :
-                        "raise Time integration/F-bar stabilization above " +
-                          number(settings.fbar_stabilization));
+                     (stabilization < 0.03 ?
+                        "set " + stabilization_entry + " to 0.03 or more" :
+                        "raise " + stabilization_entry + " above " +
+                          number(stabilization));
             case FailureKind::none:
               break;
           }
@@ -556,7 +557,9 @@ namespace rubberdyn
                     result.failure.message =
                       failure_message(block_result.failure[l],
                                       block_result.min_volume_ratio[l],
-                                      settings);
+                                      settings,
+                                      group.stabilization,
+                                      group.stabilization_entry);
                   }
               continue;
             }

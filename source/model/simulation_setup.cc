@@ -31,7 +31,11 @@ namespace rubberdyn
           groups.push_back(
             {part.rigid ? std::set<types::material_id>() : part.material_ids,
              part.law.get(),
-             part.formulation});
+             part.formulation,
+             part.fbar_stabilization,
+             part.fbar_stabilization ?
+               "Parts/" + part.name + "/F-bar stabilization" :
+               "Time integration/F-bar stabilization"});
         return groups;
       }
 

@@ -530,6 +530,16 @@ namespace rubberdyn
                             "Time integration/Scheme = quasi-static only, "
                             "hyperelastic laws only, and then for every "
                             "deformable part; see doc/quasi_static.md).");
+          prm.declare_entry(
+            "F-bar stabilization",
+            "",
+            Patterns::Anything(),
+            "F-bar parts only: this part's stiffness beta of the volumetric "
+            "stabilisation (-, 0 to 1), instead of Time integration/F-bar "
+            "stabilization, e.g. on for a crushed rubber part and off for "
+            "bending metal parts (the stabilisation resists the Gauss-point "
+            "volume changes of bending too: doc/theory.md 8.1, "
+            "doc/bushing.md). Empty: Time integration/F-bar stabilization.");
           prm.declare_entry("Initial velocity", "0, 0, 0",
                             Patterns::Anything(),
                             "Velocity of the part's nodes at t = 0 (mm/ms), "
@@ -806,6 +816,28 @@ namespace rubberdyn
                                "quasi-static only, not with '" +
                                time_integration.scheme +
                                "'; use 'F-bar' for the explicit engine");
+          const std::string stabilization =
+            Utilities::trim(prm.get("F-bar stabilization"));
+          if (!stabilization.empty())
+            {
+              const std::string entry = path + "/F-bar stabilization";
+              if (!Patterns::Double(0., 1.).match(stabilization))
+                throw InputError(entry,
+                                 "'" + stabilization.substr(0, 40) +
+                                   "' is not a number from 0 to 1 (empty: "
+                                   "Time integration/F-bar stabilization)");
+              if (prm.get("Model") == "Rigid" ||
+                  part.formulation != elements::Formulation::fbar)
+                throw InputError(entry,
+                                 "is for deformable parts of Element "
+                                 "formulation = F-bar only; part '" +
+                                   name + "' is " +
+                                   (prm.get("Model") == "Rigid" ?
+                                      std::string("rigid") :
+                                      "of '" + formulation + "'"));
+              part.fbar_stabilization =
+                Utilities::string_to_double(stabilization);
+            }
           part.initial_velocity =
             parse_vector(prm.get("Initial velocity"), path + "/Initial velocity");
           const std::string rigid_motion =

@@ -3,17 +3,19 @@
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
+
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/elements/implicit_elements.h>
-
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/materials/stress_kernel.h>
 
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -242,9 +244,37 @@ namespace rubberdyn
      */
     struct ElementGroup
     {
+      /**
+       * The group of @p material_ids with @p law and @p formulation; for
+       * F-bar, a beta of its own (@p fbar_stabilization, set by the input
+       * entry @p fbar_stabilization_entry) or none (the settings' beta).
+       */
+      ElementGroup(std::set<types::material_id>       material_ids,
+                   const materials::MaterialModel<3> *law,
+                   Formulation                        formulation,
+                   std::optional<double> fbar_stabilization = std::nullopt,
+                   std::string           fbar_stabilization_entry =
+                     "Time integration/F-bar stabilization")
+        : material_ids(std::move(material_ids))
+        , law(law)
+        , formulation(formulation)
+        , fbar_stabilization(fbar_stabilization)
+        , fbar_stabilization_entry(std::move(fbar_stabilization_entry))
+      {}
+
       std::set<types::material_id>       material_ids;
       const materials::MaterialModel<3> *law = nullptr;
       Formulation                        formulation = Formulation::fbar;
+      /**
+       * F-bar only: the group's own beta of the volumetric stabilisation
+       * (-); empty: ElementSettings::fbar_stabilization.
+       */
+      std::optional<double> fbar_stabilization;
+      /**
+       * The input entry that sets the group's beta, named in the message
+       * of an F-bar hull collapse.
+       */
+      std::string fbar_stabilization_entry;
     };
 
     /** Parameters of the element layer, common to all groups. */
@@ -561,8 +591,12 @@ namespace rubberdyn
         std::unique_ptr<materials::StressKernel> kernel;
         /** Reference density (kg/mm^3). */
         double density;
+        /** beta of the F-bar stabilisation (-); 0: none. */
+        double stabilization;
         /** kappa = beta K of the F-bar stabilisation (GPa); 0: none. */
         double stabilization_modulus;
+        /** The input entry that sets beta (ElementGroup). */
+        std::string stabilization_entry;
       };
 
       /**

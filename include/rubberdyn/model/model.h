@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ namespace rubberdyn
       std::unique_ptr<materials::MaterialModel<3>> law;
       /** Element formulation. */
       elements::Formulation formulation = elements::Formulation::fbar;
+      /**
+       * F-bar only: the part's own beta of the volumetric stabilisation
+       * (-, `Parts/<name>/F-bar stabilization`); empty: the model's
+       * (`Time integration/F-bar stabilization`).
+       */
+      std::optional<double> fbar_stabilization;
       /** Initial velocity of its nodes (mm/ms). */
       Tensor<1, 3> initial_velocity;
       /**
