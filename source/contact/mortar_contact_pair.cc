@@ -35,6 +35,9 @@ namespace rubberdyn
     {
       AssertThrow(!model.uses_mixed_up(),
                   ExcMessage("mortar contact pairs need the Q1 dofs"));
+      for (unsigned int k = 0; k < model.contact_pairs.size(); ++k)
+        if (model.contact_pairs[k].name == definition.name)
+          channel = 1 + k % 199; // deal.II's channels are below 200
       if (const char *traced = std::getenv("RUBBERDYN_PAIR_TRACE"))
         trace.enabled = definition.name == traced;
       if (const char *every = std::getenv("RUBBERDYN_PAIR_TRACE_EVERY"))
@@ -954,15 +957,50 @@ namespace rubberdyn
 
 
     void
+    MortarContactPair::start_forces(const model::EvaluationPoint &point)
+    {
+      Implementation &I = *impl;
+      for (const unsigned int i : I.owned_surface_dofs)
+        I.u_pair.local_element(i) = point.displacement.local_element(i);
+      I.u_pair.update_ghost_values_start(I.channel);
+      I.exchange = Implementation::Exchange::positions_sent;
+    }
+
+
+
+    void
     MortarContactPair::add_forces(const model::EvaluationPoint &point,
                                   VectorType                   &f,
                                   model::ContributionResults   &results)
     {
-      Implementation &I     = *impl;
-      const auto      start = std::chrono::steady_clock::now();
-      const bool      tied =
+      Implementation &I = *impl;
+      if (I.exchange != Implementation::Exchange::forces_sent)
+        compute_forces(point, results);
+      const auto start = std::chrono::steady_clock::now();
+      I.f_pair.compress_finish(VectorOperation::add);
+      I.exchange = Implementation::Exchange::idle;
+      for (const unsigned int i : I.owned_surface_dofs)
+        f.local_element(i) += I.f_pair.local_element(i);
+      I.book_trial_work();
+      I.timings.evaluation_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+
+
+    void
+    MortarContactPair::compute_forces(const model::EvaluationPoint &point,
+                                      model::ContributionResults   &results)
+    {
+      Implementation &I = *impl;
+      if (I.exchange != Implementation::Exchange::positions_sent)
+        start_forces(point);
+      const auto start = std::chrono::steady_clock::now();
+      const bool tied =
         I.definition.type == model::ContactPairDefinition::Type::tied;
-      I.load_positions(point.displacement);
+      I.u_pair.update_ghost_values_finish();
+      I.update_positions(I.u_pair);
       // (The quasi-static solver has no masses: no stable step there.)
       if (I.node_mass.empty() && point.mass.linfty_norm() > 0.)
         {
@@ -1219,10 +1257,8 @@ namespace rubberdyn
                   }
             }
         }
-      I.f_pair.compress(VectorOperation::add);
-      for (const unsigned int i : I.owned_surface_dofs)
-        f.local_element(i) += I.f_pair.local_element(i);
-      I.book_trial_work();
+      I.f_pair.compress_start(I.channel, VectorOperation::add);
+      I.exchange = Implementation::Exchange::forces_sent;
       // The springs' energy less what the penalty updates put in: the work
       // done on them.
       energy -= I.accepted_stiffness_energy + I.trial_stiffness_energy;

@@ -529,6 +529,20 @@ namespace rubberdyn
 
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       VectorType                                         u_pair, f_pair;
+      /**
+       * The MPI channel of u_pair's and f_pair's exchanges: 1 + the pair's
+       * index in the model (channel 0 is the solver's), so that the pairs'
+       * messages in flight at once never share a tag.
+       */
+      unsigned int channel = 1;
+      /** Where the split evaluation stands (start_forces(),
+       * compute_forces(), add_forces()). */
+      enum class Exchange
+      {
+        idle,
+        positions_sent,
+        forces_sent
+      } exchange = Exchange::idle;
       /** Local indices of the surface nodes' dofs that this rank owns. */
       std::vector<unsigned int> owned_surface_dofs;
 

@@ -9,6 +9,7 @@
 #include <rubberdyn/model/quasi_static_simulation.h>
 
 #include <cmath>
+#include <filesystem>
 #include <ostream>
 #include <sstream>
 
@@ -16,6 +17,26 @@ namespace rubberdyn
 {
   namespace model
   {
+    namespace
+    {
+      /** Whether @p directory holds a complete checkpoint of an explicit run
+       * (collective). */
+      bool
+      has_explicit_checkpoint(const std::string &directory, const MPI_Comm comm)
+      {
+        // write_checkpoint() makes study.txt last, and a run killed between
+        // its two renames leaves the previous checkpoint under .old.
+        namespace fs = std::filesystem;
+        const bool found =
+          Utilities::MPI::this_mpi_process(comm) == 0 &&
+          (fs::exists(directory + "/checkpoint/study.txt") ||
+           fs::exists(directory + "/checkpoint.old/study.txt"));
+        return Utilities::MPI::logical_or(found, comm);
+      }
+    } // namespace
+
+
+
     void
     PreloadedSimulation::check_continuity(const Model &model,
                                           const double end_time)
@@ -72,23 +93,22 @@ namespace rubberdyn
           preload_parameters_text(model_parameters, model.gravity.norm() != 0.))
       , checkpoint_directory(output.directory + "/preload/checkpoint")
     {
-      if (output.checkpoint_interval > 0.)
-        throw InputError("Output/Checkpoint interval",
-                         "'quasi-static then explicit' keeps its preload as "
-                         "a checkpoint by itself (" +
-                           checkpoint_directory +
-                           "); checkpoints of its explicit run are not "
-                           "supported yet: set 0");
       check_continuity(model, time_integration.quasi_static_end_time);
-      QuasiStaticSimulation::check_supported(model, time_integration, output);
       // The preload's rows go to preload/, the explicit run's to the
-      // output directory; the explicit run itself never restarts from an
-      // explicit checkpoint here (the preload is its start).
-      parameters::Output preload_output = output;
-      preload_output.directory          = output.directory + "/preload";
-      preload_output.restart            = false;
+      // output directory. The preload is a checkpoint by itself; a restart
+      // continues the explicit run from its own checkpoint (Output/
+      // Checkpoint interval) if there is one, else starts it from the
+      // preload.
+      parameters::Output preload_output  = output;
+      preload_output.directory           = output.directory + "/preload";
+      preload_output.restart             = false;
+      preload_output.checkpoint_interval = 0.;
+      QuasiStaticSimulation::check_supported(model,
+                                             time_integration,
+                                             preload_output);
       parameters::Output explicit_output = output;
-      explicit_output.restart            = false;
+      explicit_output.restart =
+        output.restart && has_explicit_checkpoint(output.directory, model.comm);
       if (!output.restart)
         quasi_static = std::make_unique<QuasiStaticSimulation>(
           model, time_integration, preload_output, title + " preload");
@@ -117,6 +137,8 @@ namespace rubberdyn
     PreloadedSimulation::run(std::ostream &log)
     {
       const bool root = Utilities::MPI::this_mpi_process(model.comm) == 0;
+      const bool continues =
+        output.restart && has_explicit_checkpoint(output.directory, model.comm);
       PreloadState state;
       if (quasi_static)
         {
@@ -131,11 +153,18 @@ namespace rubberdyn
         }
       else
         {
+          // Also under the explicit run's own checkpoint: the preload sets
+          // what that does not hold (the locked sections' shortenings).
           state = explicit_run->read_preload(checkpoint_directory,
                                              preload_parameters);
           if (root)
             log << "Starting from the preload in " << checkpoint_directory
-                << " (t = " << state.time << ")" << std::endl;
+                << " (t = " << state.time << ")"
+                << (continues ? ", continuing from the explicit run's "
+                                "checkpoint in " +
+                                  output.directory + "/checkpoint" :
+                                "")
+                << std::endl;
         }
       if (root)
         for (unsigned int s = 0; s < state.shortenings.size(); ++s)

@@ -105,7 +105,10 @@ namespace rubberdyn
                         "time_history.csv keeps its rows before the "
                         "checkpoint, the ParaView series goes on in "
                         "solution_restart_<k>.pvd (.xdmf) for the k-th restart "
-                        "(doc/restarts.md).");
+                        "(doc/restarts.md). 'quasi-static then explicit': the "
+                        "explicit run continues from its own checkpoint if "
+                        "there is one, else starts from the preload in "
+                        "preload/checkpoint (doc/quasi_static.md).");
       prm.leave_subsection();
     }
 

@@ -633,13 +633,30 @@ namespace rubberdyn
         contribution->follow_geometry();
       auto clock = std::chrono::steady_clock::now();
       // Internal forces first (owned and ghost entries), then compress and
-      // turn them into forces on the solid, then the external forces.
+      // turn them into forces on the solid, then the external forces. The
+      // external ones are computed while the internal ones' sums travel,
+      // and their own messages while the elements compute (the split
+      // evaluation of ForceContribution): the ranks then wait for each
+      // other once, on the whole step's work, rather than at every
+      // contribution's exchange.
+      for (model::ForceContribution *contribution : contributions)
+        if (contribution->accumulation() ==
+            model::ForceContribution::Accumulation::external_owned)
+          contribution->start_forces(point);
+      timing.contact += lap(clock);
       for (model::ForceContribution *contribution : contributions)
         if (contribution->accumulation() ==
             model::ForceContribution::Accumulation::internal_ghosted)
           contribution->add_forces(point, f, results);
       timing.element_forces += lap(clock);
-      f.compress(VectorOperation::add);
+      f.compress_start(0, VectorOperation::add);
+      timing.communication += lap(clock);
+      for (model::ForceContribution *contribution : contributions)
+        if (contribution->accumulation() ==
+            model::ForceContribution::Accumulation::external_owned)
+          contribution->compute_forces(point, results);
+      timing.contact += lap(clock);
+      f.compress_finish(VectorOperation::add);
       timing.communication += lap(clock);
       f *= -1.;
       f += gravity_force;

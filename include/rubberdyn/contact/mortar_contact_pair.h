@@ -175,10 +175,27 @@ namespace rubberdyn
       Accumulation
       accumulation() const override;
 
+      /**
+       * The forces at @p point: start_forces(), compute_forces() (unless
+       * they were called for this point), then the exchange of the forces
+       * on other ranks' nodes completed and this rank's added into @p f.
+       */
       void
       add_forces(const model::EvaluationPoint &point,
                  VectorType                   &f,
                  model::ContributionResults   &results) override;
+
+      /** Send the positions of this rank's surface nodes (nonblocking). */
+      void
+      start_forces(const model::EvaluationPoint &point) override;
+
+      /**
+       * Receive the other ranks' positions, integrate this rank's slave
+       * facets and send the forces on other ranks' nodes (nonblocking).
+       */
+      void
+      compute_forces(const model::EvaluationPoint &point,
+                     model::ContributionResults   &results) override;
 
       /** Yes: the forces are static, add_tangents() their derivative. */
       bool

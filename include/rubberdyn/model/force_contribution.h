@@ -136,6 +136,42 @@ namespace rubberdyn
                  ContributionResults   &results) = 0;
 
       /**
+       * @name Split evaluation (explicit solver)
+       *
+       * A contribution whose forces need data from other ranks (a mortar
+       * pair: the positions of the surface nodes that others own, and the
+       * forces it computes on their nodes) may split add_forces() in three,
+       * so that its messages travel while the ranks compute and the ranks
+       * meet once a step rather than twice per contribution (where each
+       * meeting would cost the slower rank's lead). The explicit solver
+       * calls start_forces() before the elements' forces, compute_forces()
+       * while their sums travel, and add_forces() last, all at the same
+       * @p point; add_forces() then only completes the exchange and adds.
+       * The defaults do nothing, and add_forces() alone does all, as the
+       * quasi-static solver calls it.
+       */
+      /** @{ */
+      /** Start sending what the forces at @p point need from this rank. */
+      virtual void
+      start_forces(const EvaluationPoint &point)
+      {
+        (void)point;
+      }
+
+      /**
+       * Compute the forces at @p point into the contribution's own storage
+       * and the energies, stable steps and failures into @p results, and
+       * start sending the shares of other ranks' nodes.
+       */
+      virtual void
+      compute_forces(const EvaluationPoint &point, ContributionResults &results)
+      {
+        (void)point;
+        (void)results;
+      }
+      /** @} */
+
+      /**
        * Have the next add_forces() take the parameters that follow the
        * geometry (a contact's penalty stiffness, from the current face
        * areas) from the displacement it is given, and hold them until the

@@ -33,7 +33,11 @@ namespace rubberdyn
      * skipped and the explicit run starts from the preload checkpoint in
      * the output directory, if the model's preload entries are the same
      * (model::preload_parameters_text()): several impact runs (another end
-     * time, initial velocity, density) share one preload.
+     * time, initial velocity, density) share one preload. If the explicit
+     * run has written a checkpoint of its own (`Output/Checkpoint
+     * interval`, in `<Output directory>/checkpoint/`), a restart continues
+     * from that instead, exactly as the run would have gone on; delete it
+     * to start again from the preload.
      *
      * The same boundary conditions act in both runs, with t the pseudo-time
      * of the load path in the first and the time (ms) in the second: a
@@ -48,8 +52,7 @@ namespace rubberdyn
        *
        * @param model_parameters ExplicitSimulation::model_parameters_text().
        * @throws InputError naming the entry: what either scheme cannot run,
-       *   `Output/Checkpoint interval` (no explicit checkpoints yet), a
-       *   condition that differs between the end of the load path and
+       *   a condition that differs between the end of the load path and
        *   t = 0.
        */
       PreloadedSimulation(Model                             &model,
