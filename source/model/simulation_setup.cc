@@ -35,7 +35,7 @@ namespace rubberdyn
              part.fbar_stabilization,
              part.fbar_stabilization ?
                "Parts/" + part.name + "/F-bar stabilization" :
-               "Time integration/F-bar stabilization"});
+               std::string(elements::model_fbar_stabilization_entry)});
         return groups;
       }
 

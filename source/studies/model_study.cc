@@ -803,6 +803,7 @@ namespace rubberdyn
                                "the mesh " + mesh_file +
                                  " has no cell with material id " +
                                  std::to_string(id));
+          const bool        rigid       = prm.get("Model") == "Rigid";
           const std::string formulation = prm.get("Element formulation");
           part.formulation =
             formulation == "F-bar"        ? elements::Formulation::fbar :
@@ -824,17 +825,16 @@ namespace rubberdyn
               if (!Patterns::Double(0., 1.).match(stabilization))
                 throw InputError(entry,
                                  "'" + stabilization.substr(0, 40) +
-                                   "' is not a number from 0 to 1 (empty: "
-                                   "Time integration/F-bar stabilization)");
-              if (prm.get("Model") == "Rigid" ||
-                  part.formulation != elements::Formulation::fbar)
+                                   "' is not a number from 0 to 1 (empty: " +
+                                   elements::model_fbar_stabilization_entry +
+                                   ")");
+              if (rigid || part.formulation != elements::Formulation::fbar)
                 throw InputError(entry,
                                  "is for deformable parts of Element "
                                  "formulation = F-bar only; part '" +
                                    name + "' is " +
-                                   (prm.get("Model") == "Rigid" ?
-                                      std::string("rigid") :
-                                      "of '" + formulation + "'"));
+                                   (rigid ? std::string("rigid") :
+                                            "of '" + formulation + "'"));
               part.fbar_stabilization =
                 Utilities::string_to_double(stabilization);
             }
@@ -842,7 +842,7 @@ namespace rubberdyn
             parse_vector(prm.get("Initial velocity"), path + "/Initial velocity");
           const std::string rigid_motion =
             Utilities::trim(prm.get("Rigid motion"));
-          if (prm.get("Model") == "Rigid")
+          if (rigid)
             {
               // Density and the contact stiffness, with their checks.
               part.rigid = true;

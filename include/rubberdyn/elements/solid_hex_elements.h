@@ -237,6 +237,11 @@ namespace rubberdyn
       mixed_up
     };
 
+    /** The input entry of the model-wide beta of the F-bar stabilisation
+     * (ElementSettings::fbar_stabilization), named in messages. */
+    inline constexpr char model_fbar_stabilization_entry[] =
+      "Time integration/F-bar stabilization";
+
     /**
      * One part of a model as the element layer sees it: the cells whose
      * material id is in @p material_ids get elements of @p formulation
@@ -249,12 +254,12 @@ namespace rubberdyn
        * F-bar, a beta of its own (@p fbar_stabilization, set by the input
        * entry @p fbar_stabilization_entry) or none (the settings' beta).
        */
-      ElementGroup(std::set<types::material_id>       material_ids,
-                   const materials::MaterialModel<3> *law,
-                   Formulation                        formulation,
-                   std::optional<double> fbar_stabilization = std::nullopt,
-                   std::string           fbar_stabilization_entry =
-                     "Time integration/F-bar stabilization")
+      ElementGroup(
+        std::set<types::material_id>       material_ids,
+        const materials::MaterialModel<3> *law,
+        Formulation                        formulation,
+        std::optional<double>              fbar_stabilization = std::nullopt,
+        std::string fbar_stabilization_entry = model_fbar_stabilization_entry)
         : material_ids(std::move(material_ids))
         , law(law)
         , formulation(formulation)
@@ -263,8 +268,8 @@ namespace rubberdyn
       {}
 
       std::set<types::material_id>       material_ids;
-      const materials::MaterialModel<3> *law = nullptr;
-      Formulation                        formulation = Formulation::fbar;
+      const materials::MaterialModel<3> *law;
+      Formulation                        formulation;
       /**
        * F-bar only: the group's own beta of the volumetric stabilisation
        * (-); empty: ElementSettings::fbar_stabilization.
