@@ -16,38 +16,54 @@
 #           (the whole pseudo-time at once, as the shortened ctests;
 #           default 1)
 # Runs in the working directory (bushing_bench_*); the parameter files are
-# written by tests/model/bushing_short_common.sh's bushing_variant.
+# written by tests/model/bushing_short_common.sh's bushing_variant. The
+# impact writes a checkpoint every 0.5 ms: called again in the same
+# directory after an interruption (e.g. a machine that stops its processes),
+# it continues from the last checkpoint instead of starting anew, and
+# reports the wall time of all pieces together.
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=${3:-2}; mesh_n=${4:-2}; impact=${5:-0.5}
 steps=${6:-1}
 step_size=$(awk -v s="$steps" 'BEGIN { print 1 / s }')
 source "$source_dir/tests/model/bushing_short_common.sh"
 
-run() { # NAME
-  /usr/bin/time -f "%e s wall, %M kB peak memory (rank 0)" \
+run() { # NAME: appends its log and its wall time (one line per piece)
+  /usr/bin/time -a -o "bushing_bench_$1.time" \
+    -f "%e s wall, %M kB peak memory (rank 0)" \
     mpirun --oversubscribe -np "$nproc" "$exe" "bushing_bench_$1.prm" \
-    > "bushing_bench_$1.log" 2> "bushing_bench_$1.time"
+    >> "bushing_bench_$1.log" 2>&1
 }
 
-bushing_variant 2 "$mesh_n" 0.001 "$step_size" bushing_bench_2
-rm -rf bushing_bench_2 bushing_bench_4
-run 2
-echo "preload (n = $mesh_n, $nproc ranks, $steps load steps): $(grep '^Finished: .*load steps' bushing_bench_2.log)"
-echo "  $(tail -1 bushing_bench_2.time)"
+if [ -f bushing_bench_4/checkpoint/study.txt ] ||
+   [ -f bushing_bench_4/checkpoint.old/study.txt ]; then
+  echo "continuing test 4 from its checkpoint in bushing_bench_4/checkpoint"
+else
+  bushing_variant 2 "$mesh_n" 0.001 "$step_size" bushing_bench_2
+  rm -rf bushing_bench_2 bushing_bench_4 bushing_bench_*.log bushing_bench_*.time
+  run 2
+  echo "preload (n = $mesh_n, $nproc ranks, $steps load steps): $(grep '^Finished: .*load steps' bushing_bench_2.log)"
+  echo "  $(tail -1 bushing_bench_2.time)"
 
-bushing_variant 4 "$mesh_n" "$impact" "$step_size" bushing_bench_4
-mkdir -p bushing_bench_4/preload
-cp -r bushing_bench_2/preload/checkpoint bushing_bench_4/preload/
+  bushing_variant 4 "$mesh_n" "$impact" "$step_size" bushing_bench_4
+  sed -i "s|set Checkpoint interval *= *[0-9.]*$|set Checkpoint interval = 0.5|" bushing_bench_4.prm
+  grep -q "Checkpoint interval = 0.5" bushing_bench_4.prm ||
+    { echo "bushing_bench_4.prm: no Checkpoint interval"; exit 1; }
+  mkdir -p bushing_bench_4/preload
+  cp -r bushing_bench_2/preload/checkpoint bushing_bench_4/preload/
+fi
 run 4
-echo "impact (test 4, $impact ms): $(grep '^Finished:' bushing_bench_4.log)"
-echo "  $(tail -1 bushing_bench_4.time)"
-/usr/bin/python3 - bushing_bench_4/run_summary.json <<'PY'
+echo "impact (test 4, $impact ms): $(grep '^Finished:' bushing_bench_4.log | tail -1)"
+echo "  $(tail -1 bushing_bench_4.time) ($(grep -c 'peak memory' bushing_bench_4.time) pieces)"
+/usr/bin/python3 - bushing_bench_4/run_summary.json bushing_bench_4.time <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
+# One line per piece; a killed piece has a line of its exit status first.
+wall = sum(float(line.split()[0]) for line in open(sys.argv[2])
+           if line.strip().endswith("peak memory (rank 0)"))
 b = s["ns_per_element_cycle_breakdown"]
 ns = s["ns_per_element_cycle"]
-print(f"  {s['cells']} cells ({s['deformable_cells']} deformable), {s['dofs']} dofs, {s['ranks']} ranks, {s['time_steps']} steps to {s['end_time']:.4g} ms, {s['wall_seconds']:.1f} s")
-print(f"  {ns:.0f} ns per element-cycle (x ranks): element forces {b['element_forces']:.0f}, contact {b['contact']:.0f} ({100 * b['contact'] / ns:.1f} %), vector updates {b['vector_updates']:.0f}, communication {b['communication']:.0f}, output {b['output']:.0f}")
-print(f"  40 ms at this cost: {s['time_steps'] * 40 / s['end_time']:.0f} steps, {s['wall_seconds'] * 40 / s['end_time'] / 60:.0f} minutes")
+print(f"  {s['cells']} cells ({s['deformable_cells']} deformable), {s['dofs']} dofs, {s['ranks']} ranks, {s['time_steps']} steps to {s['end_time']:.4g} ms, {wall:.1f} s wall in all (the solver's, last piece: {s['wall_seconds']:.1f} s for {s['timed_steps']} steps)")
+print(f"  last piece: {ns:.0f} ns per element-cycle (x ranks): element forces {b['element_forces']:.0f}, contact {b['contact']:.0f} ({100 * b['contact'] / ns:.1f} %), vector updates {b['vector_updates']:.0f}, communication {b['communication']:.0f}, output {b['output']:.0f}")
+print(f"  40 ms at this cost: {s['time_steps'] * 40 / s['end_time']:.0f} steps, {wall * 40 / s['end_time'] / 60:.0f} minutes")
 print(f"  energy error {100 * s['max_energy_error']:.3g} % of the largest energy; added mass fraction {s['added_mass_fraction']}")
 PY

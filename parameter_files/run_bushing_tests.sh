@@ -5,7 +5,9 @@
 # test 2's preload checkpoint, copied into their output directories (the
 # preload depends on the plate, not on the drop weight's mass or
 # velocity). Run from any directory; the outputs go to output/bushing_test_N
-# under the working directory.
+# under the working directory. Each run writes a checkpoint every
+# millisecond (Output/Checkpoint interval); to continue an interrupted test,
+# run its file with Output/Restart from checkpoint = true.
 #
 # Usage: run_bushing_tests.sh [EXECUTABLE [NPROC]]
 #   EXECUTABLE  the rubberdyn executable (default: build/rubberdyn of this
@@ -24,7 +26,9 @@ run 1
 run 2
 for n in 3 4; do
   mkdir -p "output/bushing_test_$n/preload"
-  rm -rf "output/bushing_test_$n/preload/checkpoint"
+  # A fresh impact: an earlier run's own checkpoint would be continued.
+  rm -rf "output/bushing_test_$n/preload/checkpoint" \
+    "output/bushing_test_$n/checkpoint" "output/bushing_test_$n/checkpoint.old"
   cp -r output/bushing_test_2/preload/checkpoint \
     "output/bushing_test_$n/preload/checkpoint"
   run "$n"

@@ -464,6 +464,11 @@ namespace rubberdyn
         history = std::make_unique<postprocess::TimeHistory>(history_path,
                                                              columns, root);
 
+      // Where this run (a restart: its continuation) starts: the wall time,
+      // the progress estimate and the cost per element-cycle are this
+      // run's.
+      const unsigned long               first_step = s.step();
+      const double                      first_time = s.time();
       const postprocess::SimulationView view{model, s, *elements, bodies};
       double     last_row_time    = -1.;
       auto       last_progress    = std::chrono::steady_clock::now();
@@ -511,9 +516,8 @@ namespace rubberdyn
               std::chrono::duration<double>(now - wall_start).count();
             log << "  step " << s.step() << ", t = " << t
                 << " ms, dt = " << s.time_step() << " ms, about "
-                << static_cast<int>(elapsed *
-                                    (time_integration.end_time - t) /
-                                    std::max(t, 1e-12))
+                << static_cast<int>(elapsed * (time_integration.end_time - t) /
+                                    std::max(t - first_time, 1e-12))
                 << " s left" << std::endl;
             last_progress = now;
           }
@@ -571,7 +575,8 @@ namespace rubberdyn
       // have 1200 at its default mesh).
       const unsigned int deformable_cells =
         Utilities::MPI::sum(elements->n_elements(), comm);
-      const double element_cycles = double(deformable_cells) * s.step();
+      const double element_cycles =
+        double(deformable_cells) * std::max<double>(s.step() - first_step, 1);
       time_integration::StepTimings timings = s.timings();
       for (double *t : {&timings.element_forces, &timings.contact,
                         &timings.vector_updates, &timings.communication,
@@ -587,6 +592,7 @@ namespace rubberdyn
         {"dofs", std::to_string(model.dof_handler.n_dofs())},
         {"ranks", std::to_string(n_ranks)},
         {"time_steps", std::to_string(s.step())},
+        {"timed_steps", std::to_string(s.step() - first_step)},
         {"end_time", json_number(s.time())},
         {"stopped_by_postprocessor", stopped ? "true" : "false"},
         {"wall_seconds", json_number(wall)},
