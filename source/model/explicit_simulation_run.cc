@@ -271,10 +271,11 @@ namespace rubberdyn
             parameter_tools::first_difference(model_parameters,
                                               stored_parameters);
           throw InputError(entry,
-                           "the model differs from the checkpoint's ('" +
-                             here + "' here, '" + there +
+                           "the model differs from the checkpoint's ('" + here +
+                             "' here, '" + there +
                              "' there); only End time and the Output "
-                             "settings may change on a restart");
+                             "settings may change on a restart" +
+                             restart_advice);
         }
       if (ranks != Utilities::MPI::n_mpi_processes(model.comm))
         throw InputError(entry, "the checkpoint was written by " +

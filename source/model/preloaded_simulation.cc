@@ -107,13 +107,16 @@ namespace rubberdyn
                                              time_integration,
                                              preload_output);
       parameters::Output explicit_output = output;
-      explicit_output.restart =
+      explicit_output.restart            = continues =
         output.restart && has_explicit_checkpoint(output.directory, model.comm);
       if (!output.restart)
         quasi_static = std::make_unique<QuasiStaticSimulation>(
           model, time_integration, preload_output, title + " preload");
       explicit_run = std::make_unique<ExplicitSimulation>(
         model, time_integration, explicit_output, title, model_parameters);
+      explicit_run->set_restart_advice(
+        "; to run the impact again from the preload, delete " +
+        output.directory + "/checkpoint");
       explicit_run->add_standard_postprocessors();
     }
 
@@ -136,9 +139,7 @@ namespace rubberdyn
     void
     PreloadedSimulation::run(std::ostream &log)
     {
-      const bool root = Utilities::MPI::this_mpi_process(model.comm) == 0;
-      const bool continues =
-        output.restart && has_explicit_checkpoint(output.directory, model.comm);
+      const bool   root = Utilities::MPI::this_mpi_process(model.comm) == 0;
       PreloadState state;
       if (quasi_static)
         {

@@ -119,3 +119,17 @@ grep -q "continuing from the explicit run's checkpoint" resume.log ||
 cmp full/time_history.csv part/time_history.csv ||
   { echo "the restarted hand-off differs from the uninterrupted one"; exit 1; }
 echo "explicit checkpoints after the preload: killed at 0.1 ms, continued from 0.08 ms, time_history.csv identical ($(wc -l < full/time_history.csv) lines)"
+
+# 6. Against the explicit checkpoint only End time and the Output settings
+#    may change, as for plain explicit runs: a bolt density that the
+#    preload allows (3.) is refused there, naming the entry and how to run
+#    the impact again from the preload instead.
+sed -e "s|set Density = 7.9e-6|set Density = 7.8e-6|" part.prm > denser.prm
+grep -q "Density = 7.8e-6" denser.prm || { echo "denser.prm: no density"; exit 1; }
+if $run "$exe" denser.prm > log_denser.txt 2> error_denser.txt; then
+  echo "a restart from the explicit checkpoint with another density ran"; exit 1
+fi
+grep -q "Output/Restart from checkpoint" error_denser.txt
+grep -q "Density *= 7.8e-6" error_denser.txt
+grep -q "delete part/checkpoint" error_denser.txt
+head -c 400 error_denser.txt; echo

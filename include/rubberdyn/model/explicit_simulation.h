@@ -117,6 +117,17 @@ namespace rubberdyn
       read_preload(const std::string &directory,
                    const std::string &parameters) const;
 
+      /**
+       * A sentence added to the refusal of a restart whose model differs
+       * from its checkpoint's, saying how to start instead (a hand-off: from
+       * the preload).
+       */
+      void
+      set_restart_advice(const std::string &advice)
+      {
+        restart_advice = advice;
+      }
+
       /** The solver (after construction). */
       const time_integration::ExplicitSolver &
       solver() const;
@@ -186,6 +197,8 @@ namespace rubberdyn
       parameters::Output                  output;
       std::string                         title;
       std::string                         model_parameters;
+      /** set_restart_advice(). */
+      std::string                                                restart_advice;
       std::unique_ptr<elements::SolidHexElements> elements;
       std::unique_ptr<elements::SolidHexForces>   element_forces;
       std::vector<std::unique_ptr<contact::RigidSurfaceContact>> contacts;

@@ -87,6 +87,8 @@ namespace rubberdyn
       parameters::Output                     output;
       std::string                            preload_parameters;
       std::string                            checkpoint_directory;
+      /** Whether the explicit run continues from its own checkpoint. */
+      bool                                   continues = false;
       std::unique_ptr<QuasiStaticSimulation> quasi_static;
       std::unique_ptr<ExplicitSimulation>    explicit_run;
     };
