@@ -232,22 +232,43 @@ namespace rubberdyn
 
 
 
+    std::string
+    ExplicitSimulation::checkpoint_directory_of(
+      const std::string &output_directory)
+    {
+      // write_checkpoint(): checkpoint.new/ complete, checkpoint/ renamed to
+      // checkpoint.old/, checkpoint.new/ renamed to checkpoint/, .old
+      // removed. Between the two renames only the old name holds one.
+      const std::string current = output_directory + "/checkpoint";
+      const std::string old     = current + ".old";
+      if (!std::filesystem::exists(current) && std::filesystem::exists(old))
+        return old;
+      return current;
+    }
+
+
+
+    bool
+    ExplicitSimulation::has_checkpoint(const std::string &output_directory)
+    {
+      return std::filesystem::exists(checkpoint_directory_of(output_directory) +
+                                     "/study.txt");
+    }
+
+
+
     std::pair<unsigned long, unsigned int>
     ExplicitSimulation::read_checkpoint_header()
     {
       namespace fs = std::filesystem;
       const std::string entry = "Output/Restart from checkpoint";
-      checkpoint_directory    = output.directory + "/checkpoint";
-      // Killed between the two renames of write_checkpoint(): the previous
-      // checkpoint is complete under the old name.
-      if (!fs::exists(checkpoint_directory) &&
-          fs::exists(checkpoint_directory + ".old"))
-        checkpoint_directory += ".old";
-      const std::string path = checkpoint_directory + "/study.txt";
+      checkpoint_directory    = checkpoint_directory_of(output.directory);
+      const std::string path  = checkpoint_directory + "/study.txt";
       std::ifstream     study(path);
       if (!study)
-        throw InputError(entry, "there is no complete checkpoint in " +
-                                  output.directory + "/checkpoint");
+        throw InputError(entry,
+                         "there is no complete checkpoint in " +
+                           checkpoint_directory);
       std::string   key[5];
       double        time_value;
       unsigned long step, ranks, rows;

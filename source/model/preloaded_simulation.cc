@@ -9,7 +9,6 @@
 #include <rubberdyn/model/quasi_static_simulation.h>
 
 #include <cmath>
-#include <filesystem>
 #include <ostream>
 #include <sstream>
 
@@ -24,13 +23,8 @@ namespace rubberdyn
       bool
       has_explicit_checkpoint(const std::string &directory, const MPI_Comm comm)
       {
-        // write_checkpoint() makes study.txt last, and a run killed between
-        // its two renames leaves the previous checkpoint under .old.
-        namespace fs = std::filesystem;
-        const bool found =
-          Utilities::MPI::this_mpi_process(comm) == 0 &&
-          (fs::exists(directory + "/checkpoint/study.txt") ||
-           fs::exists(directory + "/checkpoint.old/study.txt"));
+        const bool found = Utilities::MPI::this_mpi_process(comm) == 0 &&
+                           ExplicitSimulation::has_checkpoint(directory);
         return Utilities::MPI::logical_or(found, comm);
       }
     } // namespace
@@ -116,7 +110,7 @@ namespace rubberdyn
         model, time_integration, explicit_output, title, model_parameters);
       explicit_run->set_restart_advice(
         "; to run the impact again from the preload, delete " +
-        output.directory + "/checkpoint");
+        ExplicitSimulation::checkpoint_directory_of(output.directory));
       explicit_run->add_standard_postprocessors();
     }
 
@@ -163,7 +157,8 @@ namespace rubberdyn
                 << " (t = " << state.time << ")"
                 << (continues ? ", continuing from the explicit run's "
                                 "checkpoint in " +
-                                  output.directory + "/checkpoint" :
+                                  ExplicitSimulation::checkpoint_directory_of(
+                                    output.directory) :
                                 "")
                 << std::endl;
         }

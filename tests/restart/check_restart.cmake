@@ -54,4 +54,26 @@ file(STRINGS results_part/run_summary.json _part_steps REGEX "time_steps")
 if(NOT _full_steps STREQUAL _part_steps)
   message(FATAL_ERROR "step counts differ: ${_full_steps} vs ${_part_steps}")
 endif()
-message(STATUS "restart continues identically: ${_full_steps}")
+# The continuation's wall time per step (ns per element-cycle, the log's
+# time left) counts only its own steps: timed_steps is the total less the
+# checkpoint's step (before, the steps before the restart were counted too).
+string(REGEX MATCH "Restarted from the checkpoint at t = [^,]*, step ([0-9]+)"
+  _restart_line "${_out}")
+set(_restart_step "${CMAKE_MATCH_1}")
+string(REGEX MATCH "\"time_steps\": *\"?([0-9]+)" _m "${_part_steps}")
+set(_total_steps "${CMAKE_MATCH_1}")
+file(STRINGS results_part/run_summary.json _timed REGEX "timed_steps")
+string(REGEX MATCH "\"timed_steps\": *\"?([0-9]+)" _m "${_timed}")
+set(_timed_steps "${CMAKE_MATCH_1}")
+if(_restart_step STREQUAL "" OR _total_steps STREQUAL "" OR
+   _timed_steps STREQUAL "")
+  message(FATAL_ERROR "cannot read the restart step ('${_restart_line}'), "
+    "time_steps ('${_part_steps}') or timed_steps ('${_timed}')")
+endif()
+math(EXPR _expected "${_total_steps} - ${_restart_step}")
+if(NOT _timed_steps EQUAL _expected OR _restart_step EQUAL 0)
+  message(FATAL_ERROR "timed_steps ${_timed_steps} after a restart at step "
+    "${_restart_step} of ${_total_steps}; expected ${_expected}")
+endif()
+message(STATUS "restart continues identically: ${_full_steps}, timed "
+  "${_timed_steps} = ${_total_steps} - ${_restart_step}")

@@ -118,6 +118,25 @@ namespace rubberdyn
                    const std::string &parameters) const;
 
       /**
+       * The directory of the newest checkpoint that write_checkpoint() has
+       * left in @p output_directory: checkpoint/, or checkpoint.old/ when a
+       * run was killed between write_checkpoint()'s two renames (then the
+       * previous checkpoint is complete under the old name). The one place
+       * that knows this layout: the restart, the hand-off's decision whether
+       * the impact continues, and the messages naming the checkpoint use it.
+       */
+      static std::string
+      checkpoint_directory_of(const std::string &output_directory);
+
+      /**
+       * Whether @p output_directory holds a complete checkpoint of an
+       * explicit run (write_checkpoint() writes study.txt last). Not
+       * collective: the caller decides which rank looks.
+       */
+      static bool
+      has_checkpoint(const std::string &output_directory);
+
+      /**
        * A sentence added to the refusal of a restart whose model differs
        * from its checkpoint's, saying how to start instead (a hand-off: from
        * the preload).
