@@ -115,7 +115,8 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     png = sys.argv[1]
-    runs = [arg.split("=", 1) for arg in sys.argv[2:]]
+    # LABEL=CSV: the label may hold "=" itself (e.g. "n = 2").
+    runs = [arg.rsplit("=", 1) for arg in sys.argv[2:]]
     fig, axes = plt.subplots(5, 1, figsize=(8, 13), sharex=True)
     for label, path in runs:
         h = read(path)
