@@ -453,30 +453,6 @@ namespace rubberdyn
 
 
 
-    double
-    MortarContactPair::Implementation::margin_weight(
-      const FacetCorners  &slave,
-      const FacetCorners  &master,
-      const MortarSegment &segment,
-      Tensor<1, 3> (&weighted)[4],
-      Tensor<1, 3> &weight_gradient) const
-    {
-      for (unsigned int a = 0; a < 4; ++a)
-        {
-          weighted[a] = Tensor<1, 3>();
-          for (unsigned int b = 0; b < 4; ++b)
-            weighted[a] +=
-              segment.D[a][b] * slave[b] - segment.M[a][b] * master[b];
-        }
-      return mortar_segment_weight(slave,
-                                   segment,
-                                   weighted,
-                                   margin,
-                                   weight_gradient);
-    }
-
-
-
     void
     MortarContactPair::Implementation::mark_open_nodes(const Pass &pass)
     {
@@ -671,7 +647,8 @@ namespace rubberdyn
             {
               Pass::KeptSegments &kept = pass.kept[i];
               // The kept integrals at the current positions, each within
-              // the capture margin as a new one must be (margin_weight()).
+              // the capture margin as a new one must be
+              // (mortar_segment_weight()).
               bool hold = kept.valid &&
                           kept_segments_hold(kept,
                                              slave_corners,
@@ -683,11 +660,12 @@ namespace rubberdyn
                   for (unsigned int c = 0; c < 4; ++c)
                     master_corners[c] = x[mc[c]];
                   kept_weighted[k].weight =
-                    margin_weight(slave_corners,
-                                  master_corners,
-                                  kept.segments[k].integrals,
-                                  kept_weighted[k].vectors,
-                                  kept_weighted[k].gradient);
+                    mortar_segment_weight(slave_corners,
+                                          master_corners,
+                                          kept.segments[k].integrals,
+                                          margin,
+                                          kept_weighted[k].vectors,
+                                          kept_weighted[k].gradient);
                   hold = kept_weighted[k].weight > 0.;
                 }
               if (hold)
@@ -712,11 +690,12 @@ namespace rubberdyn
                 master_corners[k] = x[mc[k]];
               if (!slave_facet.integrate(master_corners, segment))
                 continue;
-              const double w = margin_weight(slave_corners,
-                                             master_corners,
-                                             segment,
-                                             weighted,
-                                             weight_gradient);
+              const double w = mortar_segment_weight(slave_corners,
+                                                     master_corners,
+                                                     segment,
+                                                     margin,
+                                                     weighted,
+                                                     weight_gradient);
               if (!(w > 0.))
                 continue;
               add_segment(i, m, segment, weighted, w, weight_gradient);

@@ -378,23 +378,6 @@ namespace rubberdyn
                     Tensor<1, 3> (&on_slave)[4],
                     Tensor<1, 3> (&on_master)[4]) const;
 
-      /**
-       * The weight of the segment of @p slave and @p master within the
-       * capture margin (mortar_segment_weight(): 1 up to half the margin,
-       * 0 from the margin on, where the mean gap along the slave facet's
-       * normal is farther than the contact's: the back of a thin part, a
-       * fold, whatever the search found), and its @p weight_gradient.
-       * Also gives the segment's weighted gap vectors, @p weighted[a] =
-       * sum_b D_ab x_b - M_ab x^_b. The one weight of add_forces() and of
-       * the tangent.
-       */
-      double
-      margin_weight(const FacetCorners  &slave,
-                    const FacetCorners  &master,
-                    const MortarSegment &segment,
-                    Tensor<1, 3> (&weighted)[4],
-                    Tensor<1, 3> &weight_gradient) const;
-
       /** Whether a gap facet of this rank lies around the @p k-th node of
        * @p pass (its forces then are partly this rank's). */
       bool

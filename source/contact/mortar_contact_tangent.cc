@@ -192,14 +192,11 @@ namespace rubberdyn
               if (all_rows)
                 {
                   Tensor<1, 3, Number> weighted[4];
-                  for (unsigned int c = 0; c < 4; ++c)
-                    for (unsigned int b = 0; b < 4; ++b)
-                      weighted[c] += segment.D[c][b] * slave_corners[b] -
-                                     segment.M[c][b] * master_corners[b];
                   row.weight = mortar_segment_weight(slave_corners,
+                                                     master_corners,
                                                      segment,
-                                                     weighted,
                                                      margin,
+                                                     weighted,
                                                      row.weight_gradient);
                   if (record)
                     {

@@ -603,11 +603,19 @@ namespace rubberdyn
     template <typename Number>
     Number
     mortar_segment_weight(const FacetCornersOf<Number>  &slave,
+                          const FacetCornersOf<Number>  &master,
                           const MortarSegmentOf<Number> &segment,
-                          const Tensor<1, 3, Number> (&weighted)[4],
-                          const double          margin,
+                          const double                   margin,
+                          Tensor<1, 3, Number> (&weighted)[4],
                           Tensor<1, 3, Number> &weight_gradient)
     {
+      for (unsigned int a = 0; a < 4; ++a)
+        {
+          weighted[a] = Tensor<1, 3, Number>();
+          for (unsigned int b = 0; b < 4; ++b)
+            weighted[a] +=
+              segment.D[a][b] * slave[b] - segment.M[a][b] * master[b];
+        }
       weight_gradient = Tensor<1, 3, Number>();
       Tensor<1, 3, Number> normal =
         cross_product_3d(slave[2] - slave[0], slave[3] - slave[1]);
@@ -643,15 +651,17 @@ namespace rubberdyn
                              const unsigned int);
     template double
     mortar_segment_weight(const FacetCornersOf<double> &,
+                          const FacetCornersOf<double> &,
                           const MortarSegmentOf<double> &,
-                          const Tensor<1, 3, double> (&)[4],
                           const double,
+                          Tensor<1, 3, double> (&)[4],
                           Tensor<1, 3, double> &);
     template ADNumber
     mortar_segment_weight(const FacetCornersOf<ADNumber> &,
+                          const FacetCornersOf<ADNumber> &,
                           const MortarSegmentOf<ADNumber> &,
-                          const Tensor<1, 3, ADNumber> (&)[4],
                           const double,
+                          Tensor<1, 3, ADNumber> (&)[4],
                           Tensor<1, 3, ADNumber> &);
     template bool
     integrate_mortar_segment(const FacetCornersOf<ADNumber> &,

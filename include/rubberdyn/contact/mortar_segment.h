@@ -119,7 +119,10 @@ namespace rubberdyn
      * The weight in [0, 1] with which a segment enters its slave nodes'
      * covered areas, weighted gaps and forces, from its mean gap along the
      * slave facet's central normal, gbar = n . sum_a weighted_a / area (mm;
-     * @p weighted[a] = sum_b D_ab x_b - M_ab x^_b): 1 while |gbar| is at
+     * the segment's weighted gap vectors @p weighted[a] = sum_b D_ab x_b -
+     * M_ab x^_b (mm^3), with x_b the @p slave and x^_b the @p master
+     * corners, are computed here and returned: the forces and the tangent
+     * use them): 1 while |gbar| is at
      * most half the capture @p margin (mm), 0 from the margin on (farther
      * apart is not the contact's: the back of a thin part, a fold, a face
      * tilted away from its partner), and a C1 cubic between. A segment that
@@ -139,9 +142,10 @@ namespace rubberdyn
     template <typename Number>
     Number
     mortar_segment_weight(const FacetCornersOf<Number>  &slave,
+                          const FacetCornersOf<Number>  &master,
                           const MortarSegmentOf<Number> &segment,
-                          const Tensor<1, 3, Number> (&weighted)[4],
-                          const double          margin,
+                          const double                   margin,
+                          Tensor<1, 3, Number> (&weighted)[4],
                           Tensor<1, 3, Number> &weight_gradient);
 
     namespace mortar_segment_internal
