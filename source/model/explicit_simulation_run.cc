@@ -251,8 +251,7 @@ namespace rubberdyn
     bool
     ExplicitSimulation::has_checkpoint(const std::string &output_directory)
     {
-      return std::filesystem::exists(checkpoint_directory_of(output_directory) +
-                                     "/study.txt");
+      return std::filesystem::exists(checkpoint_directory_of(output_directory));
     }
 
 

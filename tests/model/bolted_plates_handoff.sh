@@ -133,3 +133,20 @@ grep -q "Output/Restart from checkpoint" error_denser.txt
 grep -q "Density *= 7.8e-6" error_denser.txt
 grep -q "delete part/checkpoint" error_denser.txt
 head -c 400 error_denser.txt; echo
+
+# 7. A damaged explicit checkpoint (its study.txt, written last, is gone)
+#    is refused, naming it; the run does not start the impact again from
+#    the preload, which would overwrite part/'s checkpoint and rows.
+rm part/checkpoint/study.txt
+cp part/time_history.csv part_before_damaged_restart.csv
+if $run "$exe" part.prm > log_damaged.txt 2> error_damaged.txt; then
+  echo "a restart against a damaged explicit checkpoint ran"; exit 1
+fi
+grep -q "Output/Restart from checkpoint" error_damaged.txt &&
+  grep -q "no complete checkpoint in part/checkpoint" error_damaged.txt ||
+  { echo "the damaged checkpoint was not named:"; cat error_damaged.txt; exit 1; }
+cmp part/time_history.csv part_before_damaged_restart.csv ||
+  { echo "the refused restart changed part/time_history.csv"; exit 1; }
+[ -f part/checkpoint/rank_0.bin ] ||
+  { echo "the refused restart removed part/checkpoint"; exit 1; }
+head -c 300 error_damaged.txt; echo

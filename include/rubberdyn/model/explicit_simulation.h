@@ -129,9 +129,13 @@ namespace rubberdyn
       checkpoint_directory_of(const std::string &output_directory);
 
       /**
-       * Whether @p output_directory holds a complete checkpoint of an
-       * explicit run (write_checkpoint() writes study.txt last). Not
-       * collective: the caller decides which rank looks.
+       * Whether an explicit run has left a checkpoint in @p
+       * output_directory (checkpoint_directory_of() exists), complete or
+       * not: a restart then reads it, and read_checkpoint_header() refuses
+       * an incomplete one instead of starting over, which would overwrite
+       * it. A run killed before its first checkpoint was complete leaves
+       * only checkpoint.new/, which does not count. Not collective: the
+       * caller decides which rank looks.
        */
       static bool
       has_checkpoint(const std::string &output_directory);
