@@ -259,7 +259,6 @@ namespace rubberdyn
     std::pair<unsigned long, unsigned int>
     ExplicitSimulation::read_checkpoint_header()
     {
-      namespace fs = std::filesystem;
       const std::string entry = "Output/Restart from checkpoint";
       checkpoint_directory    = checkpoint_directory_of(output.directory);
       const std::string path  = checkpoint_directory + "/study.txt";
