@@ -228,6 +228,10 @@ namespace rubberdyn
         /** By node index, of the last evaluation: pressure (GPa) and mean
          * gap (mm, 0 where nothing is covered), for ParaView. */
         std::vector<double> shown_pressure, shown_gap;
+        /** By node index: whether the implicit solver's pattern holds the
+         * node's patch (its traction was live at some assembly, never
+         * cleared; MortarContactPair::update_couplings()). */
+        std::vector<bool> coupled;
 
         /** A segment kept for reuse: its master facet, the integrals and
          * the master facet's corners when they were integrated. */
@@ -555,6 +559,8 @@ namespace rubberdyn
       /** Energy in the pair's springs at the last evaluation (J). */
       double             energy = 0.;
       ContactPairTimings timings;
+      /** How many update_couplings() have marked new nodes. */
+      unsigned int coupling_growths = 0;
 
       /** By node index: open (mark_open_nodes()). */
       std::vector<char> open_node;

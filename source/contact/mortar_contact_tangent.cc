@@ -424,6 +424,50 @@ namespace rubberdyn
 
 
     void
+    MortarContactPair::update_couplings(const model::EvaluationPoint &point)
+    {
+      Implementation &I = *impl;
+      I.load_positions(point.displacement);
+      std::vector<unsigned int>                patch;
+      std::vector<Point<3>>                    y;
+      std::vector<Tensor<1, 3>>                force;
+      std::vector<std::array<unsigned int, 3>> overlaps;
+      bool                                     grown = false;
+      for (Implementation::Pass &pass : I.passes)
+        {
+          pass.coupled.resize(pass.nodes.size(), false);
+          for (unsigned int k = 0; k < pass.nodes.size(); ++k)
+            {
+              if (pass.coupled[k] || !I.has_own_facet(pass, k))
+                continue;
+              // The same test as add_tangents()'s, at the same positions:
+              // a node it will write a block for is marked here first.
+              I.patch_of(pass, k, patch);
+              y.resize(patch.size());
+              for (unsigned int j = 0; j < patch.size(); ++j)
+                y[j] = I.x[patch[j]];
+              force.assign(patch.size(), Tensor<1, 3>());
+              if (I.node_forces(pass,
+                                k,
+                                patch,
+                                y,
+                                point.time,
+                                force,
+                                overlaps,
+                                true))
+                {
+                  pass.coupled[k] = true;
+                  grown           = true;
+                }
+            }
+        }
+      if (grown)
+        ++I.coupling_growths;
+    }
+
+
+
+    void
     MortarContactPair::add_couplings(const CouplingBlock &add) const
     {
       const Implementation                &I = *impl;
@@ -432,7 +476,8 @@ namespace rubberdyn
       for (const Implementation::Pass &pass : I.passes)
         for (unsigned int k = 0; k < pass.nodes.size(); ++k)
           {
-            if (!I.has_own_facet(pass, k))
+            if (k >= pass.coupled.size() || !pass.coupled[k] ||
+                !I.has_own_facet(pass, k))
               continue;
             I.patch_of(pass, k, patch);
             dofs.clear();
@@ -449,7 +494,7 @@ namespace rubberdyn
     unsigned int
     MortarContactPair::couplings_version() const
     {
-      return impl->timings.searches;
+      return impl->timings.searches + impl->coupling_growths;
     }
   } // namespace contact
 } // namespace rubberdyn

@@ -729,7 +729,12 @@ namespace rubberdyn
       const VectorType                    &increment,
       const bool                           predictor)
     {
-      // A contact search found new candidates: a new pattern first.
+      // A contact search found new candidates, or a contact closed that
+      // was open at every assembly before: a new pattern first.
+      place_bodies(body_time);
+      const model::EvaluationPoint point{u, zero, zero, bodies, t};
+      for (model::ForceContribution *load : loads)
+        load->update_couplings(point);
       {
         bool changed = false;
         for (unsigned int l = 0; l < loads.size(); ++l)
@@ -798,8 +803,6 @@ namespace rubberdyn
         });
       // The loads' tangents (the pressures' load stiffness, contact),
       // block by block.
-      place_bodies(body_time);
-      const model::EvaluationPoint         point{u, zero, zero, bodies, t};
       FullMatrix<double>                   block_matrix;
       Vector<double>                       block_rhs;
       std::vector<unsigned int>            block_local;

@@ -113,6 +113,9 @@ namespace mortar_probe
       const Vector<double> f_minus = forces(pair, minus, time);
       forces(pair, u, time);
 
+      // As the quasi-static solver does before each assembly.
+      const model::EvaluationPoint point{u, v, mass, bodies, time};
+      pair.update_couplings(point);
       std::set<std::pair<types::global_dof_index, types::global_dof_index>>
         announced;
       pair.add_couplings([&](const std::vector<types::global_dof_index> &dofs) {
@@ -123,7 +126,6 @@ namespace mortar_probe
       TangentComparison            result;
       Vector<double>               Kw(u.size());
       const Vector<double>         w_full = gather(w, comm);
-      const model::EvaluationPoint point{u, v, mass, bodies, time};
       pair.add_tangents(point,
                         [&](const std::vector<types::global_dof_index> &dofs,
                             const std::vector<double>                  &K) {

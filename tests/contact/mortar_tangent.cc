@@ -22,7 +22,11 @@
 //     rate);
 //  5. tied (Tie tolerance 0.01 mm at the block's initial contact).
 // The tangent must also be non-trivial (|K w| > 0) and its blocks must
-// stay within the couplings of add_couplings(). Run on 1 and 2 ranks.
+// stay within the couplings of add_couplings() (after update_couplings(),
+// as the solver calls them). Run on 1 and 2 ranks. And:
+//  6. the couplings announced are only the live ones: none while the
+//     block is 0.05 mm above the plate; pressed in, the closed nodes'
+//     patches, with a new couplings_version().
 #include <deal.II/base/mpi.h>
 
 #include <rubberdyn/contact/mortar_contact_pair.h>
@@ -115,6 +119,47 @@ main(int argc, char **argv)
               0.);
     }
   definition.two_pass = false;
+
+  // 6. Only live couplings are announced (update_couplings(), before
+  // every assembly of the quasi-static solver): the block 0.05 mm above
+  // the plate announces none, pressed in it announces the patches of its
+  // closed nodes, and couplings_version() changes (the solver's cue to
+  // build a new pattern). Before 2026-12-05 every slave node's patch was
+  // announced, open or not.
+  {
+    contact::MortarContactPair pair(model, definition);
+    VectorType                 rest(model.partitioner), unit(model.partitioner);
+    unit = 1.;
+    unit.update_ghost_values();
+    const std::vector<model::RigidBody> no_bodies;
+    // Evaluated at u (as the solver's residual), then the couplings there:
+    // the number of dofs over all announced blocks, and whether
+    // update_couplings() changed the version.
+    const auto couplings_at = [&](const double depth) {
+      place(u, 0., depth, 2e-3);
+      probe.forces(pair, u, 0.);
+      const unsigned int before = pair.couplings_version();
+      pair.update_couplings({u, rest, unit, no_bodies, 0.});
+      types::global_dof_index n = 0;
+      pair.add_couplings([&](const std::vector<types::global_dof_index> &dofs) {
+        n += dofs.size();
+      });
+      return std::make_pair(Utilities::MPI::sum(n, comm),
+                            pair.couplings_version() != before);
+    };
+    const auto open   = couplings_at(-5e-2);
+    const auto closed = couplings_at(1e-2);
+    if (root)
+      out() << "6. couplings: " << open.first
+            << " dofs in blocks while open, version changed: "
+            << (open.second ? "yes" : "no") << "; pressed in: "
+            << (closed.first > 0 ? "blocks announced" : "none")
+            << ", version changed: " << (closed.second ? "yes" : "no")
+            << std::endl;
+    check(open.first == 0 && !open.second, "6. no couplings while open");
+    check(closed.first > 0 && closed.second,
+          "6. the closed nodes' couplings, a new version");
+  }
 
   // 3., 4. Coulomb: accepted at u, then moved along x.
   definition.type             = model::ContactPairDefinition::Type::coulomb;

@@ -219,11 +219,29 @@ namespace rubberdyn
       add_tangents(const model::EvaluationPoint &point,
                    const TangentBlock           &add) const override;
 
-      /** The blocks add_tangents() may write, from the last search. */
+      /**
+       * Mark the slave nodes of this rank whose traction is live at
+       * @p point (node_forces(): a closed gap, or a tied node); a node
+       * once marked stays so. Collective (one ghost update).
+       */
+      void
+      update_couplings(const model::EvaluationPoint &point) override;
+
+      /**
+       * The blocks add_tangents() may write: over the patch of every
+       * marked node (update_couplings()), its slave facets and all their
+       * candidate master facets of the last search. Open nodes write no
+       * block: leaving them out keeps the direct solver's factor small
+       * (the bolt's shank in its holes, open during the preload, was a
+       * third of a Newton step's time on the coarse bushing mesh).
+       */
       void
       add_couplings(const CouplingBlock &add) const override;
 
-      /** The number of searches so far: new candidates, new couplings. */
+      /**
+       * Changes with every search (new candidates) and every
+       * update_couplings() that marked a node.
+       */
       unsigned int
       couplings_version() const override;
 

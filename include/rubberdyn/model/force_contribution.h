@@ -277,9 +277,25 @@ namespace rubberdyn
       }
 
       /**
+       * For the implicit solver, before each assembly at @p point: make
+       * add_couplings() cover every block add_tangents() writes at
+       * @p point, changing couplings_version() if that needs more. Lets a
+       * contribution announce only the couplings that are live (a contact
+       * pair's closed nodes) rather than every one that might become so.
+       * Collective. The default does nothing: right for contributions whose
+       * couplings are known in advance.
+       */
+      virtual void
+      update_couplings(const EvaluationPoint &point)
+      {
+        (void)point;
+      }
+
+      /**
        * A number that changes whenever the couplings of add_couplings()
-       * change (a contact search found new candidates). The solver compares
-       * it before each assembly and rebuilds its pattern on a change.
+       * change (a contact search found new candidates, update_couplings()
+       * found new live ones). The solver compares it before each assembly
+       * and rebuilds its pattern on a change.
        */
       virtual unsigned int
       couplings_version() const
