@@ -670,488 +670,555 @@ namespace rubberdyn
 
 
     void
-    ExplicitSolver::run(const double end_time, const std::function<void()> &monitor)
+    ExplicitSolver::StepSums::reinit(const unsigned int n_bodies,
+                                     const unsigned int n_constraint_groups,
+                                     const unsigned int n_groups,
+                                     const unsigned int n_shared_dofs)
     {
-      const unsigned int n_owned  = partitioner->locally_owned_size();
-      const unsigned int n_bodies = bodies.size();
-      const unsigned int n_cgroups = constraints ? constraints->n_groups() : 0;
-      const unsigned int n_groups  = settings.n_groups;
-      if (!started)
-        {
-          // The constrained dofs start with their prescribed velocity (a
-          // loaded checkpoint has started and keeps its own).
-          if (constraints != nullptr)
-            {
-              for (const KinematicConstraints::Entry &entry :
-                   constraints->entries())
-                v.local_element(entry.dof) =
-                  constraints->initial_velocity(entry);
-              v.update_ghost_values();
-            }
-          // Initial energy: kinetic energy of the initial velocities.
-          double local = 0.;
-          for (unsigned int i = 0; i < n_owned; ++i)
-            if (!rigid_dof[i]) // a rigid part's energy is its body's
-              local += 0.5 * mass.local_element(i) * v.local_element(i) *
-                       v.local_element(i);
-          energy.initial = Utilities::MPI::sum(local, comm);
-          for (const RigidBody &body : bodies)
-            energy.initial += 0.5 * body.mass * body.velocity.norm_square() +
-                              0.5 * body.angular_velocity *
-                                (body.inertia * body.angular_velocity);
-        }
+      body_offset     = n_energy_sums;
+      reaction_offset = body_offset + 6 * n_bodies;
+      moment_offset   = reaction_offset + n_constraint_groups;
+      // Per constraint group: reaction, moment (3), work up to t_n and its
+      // share on [t_n, t_{n+1}].
+      group_offset = moment_offset + 5 * n_constraint_groups;
+      values.assign(group_offset + 7 * n_groups, 0.);
+      local_reaction.assign(6 * n_constraint_groups, 0.);
+      shared_velocity.assign(n_shared_dofs, 0.);
+      group_kinetic.assign(n_groups + 1, 0.);
+      group_momentum.assign(3 * (n_groups + 1), 0.);
+    }
 
+
+
+    void
+    ExplicitSolver::start()
+    {
+      // The constrained dofs start with their prescribed velocity (a
+      // loaded checkpoint has started and keeps its own).
+      if (constraints != nullptr)
+        {
+          for (const KinematicConstraints::Entry &entry :
+               constraints->entries())
+            v.local_element(entry.dof) = constraints->initial_velocity(entry);
+          v.update_ghost_values();
+        }
+      // Initial energy: kinetic energy of the initial velocities.
+      double local = 0.;
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        if (!rigid_dof[i]) // a rigid part's energy is its body's
+          local += 0.5 * mass.local_element(i) * v.local_element(i) *
+                   v.local_element(i);
+      energy.initial = Utilities::MPI::sum(local, comm);
+      for (const RigidBody &body : bodies)
+        energy.initial +=
+          0.5 * body.mass * body.velocity.norm_square() +
+          0.5 * body.angular_velocity * (body.inertia * body.angular_velocity);
+    }
+
+
+
+    double
+    ExplicitSolver::next_time_step(std::chrono::steady_clock::time_point &clock)
+    {
+      // Collective 1: the smallest element and contact steps of the whole
+      // model (a failed element: a negative element step), then combined:
+      // elements and penalty springs act in parallel on contact nodes.
+      double minima[2];
+      minima[0] = results.failure.failed ? -1. : results.element_time_step;
+      minima[1] = results.contact_time_step;
+      Utilities::MPI::min(ArrayView<const double>(minima, 2),
+                          comm,
+                          ArrayView<double>(minima, 2));
+      timing.communication += lap(clock);
+      if (minima[0] < 0.)
+        {
+          const std::vector<std::string> messages =
+            Utilities::MPI::all_gather(comm, results.failure.message);
+          std::string text;
+          for (const std::string &m : messages)
+            if (!m.empty() && text.empty())
+              text = m;
+          throw SolverFailure(text + ", at time " + number(current_time) +
+                              " ms, step " + std::to_string(step_number));
+        }
+      const double stable_step = 1. / std::sqrt(1. / (minima[0] * minima[0]) +
+                                                1. / (minima[1] * minima[1]));
+      const double new_step    = settings.time_step_scale * stable_step;
+      if (new_step < settings.minimum_time_step)
+        throw SolverFailure("the stable time step " + number(new_step) +
+                            " ms fell below the minimum time step " +
+                            number(settings.minimum_time_step) +
+                            " ms at time " + number(current_time) +
+                            " ms, step " + std::to_string(step_number));
+      return new_step;
+    }
+
+
+
+    void
+    ExplicitSolver::advance_velocities(const StepWeights &w)
+    {
+      // Velocities of the solid to the next half step; kinetic energy at
+      // t_n from the mean of the half-step velocities, per group (StepWeights).
+      sums.kinetic = 0.;
+      std::fill(sums.group_kinetic.begin(), sums.group_kinetic.end(), 0.);
+      std::fill(sums.group_momentum.begin(), sums.group_momentum.end(), 0.);
+      for (unsigned int k = 0; k < shared_dofs.size(); ++k)
+        sums.shared_velocity[k] = v.local_element(shared_dofs[k].dof);
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        {
+          const double v_old = v.local_element(i);
+          const double v_new = v_old + w.average_step *
+                                         inverse_mass.local_element(i) *
+                                         f.local_element(i);
+          v.local_element(i) = v_new;
+          if (rigid_dof[i]) // moves with its body, counted with it
+            continue;
+          const double       m         = mass.local_element(i);
+          const unsigned int g         = dof_group[i];
+          const double       v_mean    = w.old * v_old + w.next * v_new;
+          const double       kinetic_i = 0.5 * m * v_mean * v_mean;
+          sums.kinetic += kinetic_i;
+          sums.group_kinetic[g] += kinetic_i;
+          sums.group_momentum[3 * g + dof_component[i]] += m * v_mean;
+        }
+    }
+
+
+
+    void
+    ExplicitSolver::apply_constraints(const StepWeights &w)
+    {
+      // Prescribed velocities at t_{n+1/2}, their reactions and work (the
+      // kinetic energy of the free update is corrected). Their work follows
+      // the trapezoidal rule per step, as the energies are at t_n:
+      // (r^{n-1} + r^n) / 2 times the displacement increment on
+      // [t_{n-1}, t_n]. The half with r^n counts now, the one on
+      // [t_n, t_{n+1}] with the energies at t_{n+1}. The first step starts
+      // from the velocity at t_0 itself: its work goes to t_1, with the
+      // mean velocity, which also counts a jump from the initial to the
+      // prescribed velocity exactly.
+      sums.constraint_work      = 0.;
+      sums.constraint_work_next = 0.;
+      std::fill(sums.local_reaction.begin(), sums.local_reaction.end(), 0.);
+      if (constraints == nullptr)
+        return;
+      const unsigned int n_cgroups = constraints->n_groups();
+      constraints->begin_step(current_time, w.new_step);
+      for (const KinematicConstraints::Entry &entry : constraints->entries())
+        {
+          const unsigned int i      = entry.dof;
+          const double       m      = mass.local_element(i);
+          const double       v_free = v.local_element(i);
+          const double       v_old  = v_free - w.average_step *
+                                          inverse_mass.local_element(i) *
+                                          f.local_element(i);
+          const double v_new =
+            constraints->half_step_velocity(entry, u.local_element(i));
+          const double r =
+            m * (v_new - v_old) / w.average_step - f.local_element(i);
+          sums.local_reaction[entry.group] += r;
+          // Moment about the group's point, current position.
+          {
+            Tensor<1, 3> arm;
+            for (unsigned int d = 0; d < 3; ++d)
+              arm[d] = entry.X[d] + u.local_element(entry.node_dofs[d]) -
+                       constraints->moment_point(entry.group)[d];
+            Tensor<1, 3> force;
+            force[dof_component[i]]   = r;
+            const Tensor<1, 3> moment = cross_product_3d(arm, force);
+            for (unsigned int d = 0; d < 3; ++d)
+              sums.local_reaction[n_cgroups + 3 * entry.group + d] += moment[d];
+          }
+          double work = 0., work_next;
+          if (started)
+            {
+              work      = 0.5 * r * v_old * last_time_step;
+              work_next = 0.5 * r * v_new * w.new_step;
+            }
+          else
+            work_next = r * 0.5 * (v_old + v_new) * w.average_step;
+          sums.constraint_work += work;
+          sums.constraint_work_next += work_next;
+          sums.local_reaction[4 * n_cgroups + entry.group] += work;
+          sums.local_reaction[5 * n_cgroups + entry.group] += work_next;
+          const unsigned int g         = dof_group[i];
+          const double       mean_new  = w.old * v_old + w.next * v_new;
+          const double       mean_free = w.old * v_old + w.next * v_free;
+          const double       correction =
+            0.5 * m * (mean_new * mean_new - mean_free * mean_free);
+          sums.kinetic += correction;
+          sums.group_kinetic[g] += correction;
+          sums.group_momentum[3 * g + dof_component[i]] +=
+            m * (mean_new - mean_free);
+          v.local_element(i) = v_new;
+        }
+    }
+
+
+
+    void
+    ExplicitSolver::add_shared_dofs_motion(const StepWeights &w)
+    {
+      // Dofs shared by several groups: split by their masses.
+      for (unsigned int k = 0; k < shared_dofs.size(); ++k)
+        {
+          const unsigned int i = shared_dofs[k].dof;
+          if (rigid_dof[i])
+            continue;
+          const double v_mid =
+            w.old * sums.shared_velocity[k] + w.next * v.local_element(i);
+          for (unsigned int g = 0; g < settings.n_groups; ++g)
+            {
+              const double m = shared_dofs[k].mass_by_group[g];
+              sums.group_kinetic[g] += 0.5 * m * v_mid * v_mid;
+              sums.group_momentum[3 * g + dof_component[i]] += m * v_mid;
+            }
+        }
+    }
+
+
+
+    void
+    ExplicitSolver::sum_over_ranks()
+    {
       // Collective 2: kinetic, internal, contact, bulk viscosity, gravity
       // work, the constraints' work up to t_n and their work at t_n that
       // belongs to t_{n+1}, friction work, the contributions' external
       // work, the prescribed bodies' work, then the body forces, the
       // reactions and their moments, and per group the internal energy,
       // kinetic energy and momentum, bulk-viscosity power and gravity work.
-      constexpr unsigned int n_energy_sums = 10;
-      const unsigned int     body_offset   = n_energy_sums;
-      const unsigned int     reaction_offset = body_offset + 6 * n_bodies;
-      const unsigned int     moment_offset   = reaction_offset + n_cgroups;
-      // Per constraint group: reaction, moment (3), work up to t_n and its
-      // share on [t_n, t_{n+1}].
-      const unsigned int     group_offset    = moment_offset + 5 * n_cgroups;
-      std::vector<double> sums(group_offset + 7 * n_groups);
-      std::vector<double> local_reaction(6 * n_cgroups);
-      std::vector<double> shared_velocity(shared_dofs.size());
-      // Kinetic energy and momentum per group, plus one bucket for the
-      // shared dofs (distributed by mass afterwards).
-      std::vector<double> group_kinetic(n_groups + 1), group_momentum(3 * (n_groups + 1));
-      double minima[2];
-      auto                clock = std::chrono::steady_clock::now();
+      const unsigned int   n_groups = settings.n_groups;
+      std::vector<double> &values   = sums.values;
+      values[0]                     = sums.kinetic;
+      values[1]                     = results.internal_energy;
+      values[2]                     = results.contact_energy;
+      values[3]                     = results.bulk_viscosity_power;
+      values[4]                     = gravity_work_increment;
+      values[5]                     = sums.constraint_work;
+      values[6]                     = sums.constraint_work_next;
+      values[7]                     = results.friction_dissipation;
+      values[8]                     = results.external_work;
+      values[9]                     = 0.;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            values[sums.body_offset + 6 * b + d] = results.force_on_body[b][d];
+            values[sums.body_offset + 6 * b + 3 + d] =
+              results.moment_on_body[b][d];
+          }
+      // The forces on the rigid parts' nodes (with their weight) and their
+      // moments about the bodies' current centres.
+      for (const RigidPartNodes &part : rigid_parts)
+        {
+          const RigidBody &body   = bodies[part.body];
+          const Point<3>   centre = body.current_reference_position();
+          double *const    sum    = &values[sums.body_offset + 6 * part.body];
+          for (unsigned int n = 0; n < part.dofs.size(); ++n)
+            {
+              Tensor<1, 3> force, arm;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const unsigned int i = part.dofs[n][d];
+                  force[d]             = f.local_element(i);
+                  arm[d] = part.X[n][d] + u.local_element(i) - centre[d];
+                }
+              const Tensor<1, 3> moment = cross_product_3d(arm, force);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  sum[d] += force[d];
+                  sum[3 + d] += moment[d];
+                }
+            }
+        }
+      for (unsigned int g = 0; g < sums.local_reaction.size(); ++g)
+        values[sums.reaction_offset + g] = sums.local_reaction[g];
+      for (unsigned int g = 0; g < n_groups; ++g)
+        {
+          values[sums.group_offset + g] = results.internal_energy_by_group[g];
+          values[sums.group_offset + n_groups + 4 * g] = sums.group_kinetic[g];
+          for (unsigned int d = 0; d < 3; ++d)
+            values[sums.group_offset + n_groups + 4 * g + 1 + d] =
+              sums.group_momentum[3 * g + d];
+          values[sums.group_offset + 5 * n_groups + g] =
+            results.bulk_viscosity_power_by_group[g];
+          values[sums.group_offset + 6 * n_groups + g] =
+            group_gravity_increment[g];
+        }
+      Utilities::MPI::sum(ArrayView<const double>(values),
+                          comm,
+                          ArrayView<double>(values));
+    }
+
+
+
+    void
+    ExplicitSolver::book_sums(const double new_step)
+    {
+      const std::vector<double> &values = sums.values;
+      const unsigned int n_cgroups = constraints ? constraints->n_groups() : 0;
+      const unsigned int n_groups  = settings.n_groups;
+      energy.kinetic               = values[0];
+      energy.internal              = values[1];
+      energy.contact               = values[2];
+      // A run that starts deformed (a preloaded state handed over from the
+      // quasi-static solver) starts with its stored energy: in the elements
+      // and in the penalty springs of contacts that are closed at the
+      // start.
+      if (!started)
+        energy.initial += energy.internal + energy.contact;
+      // The viscous forces at t_n act on [t_{n-1/2}, t_{n+1/2}]: the half
+      // on [t_n, t_{n+1/2}] belongs to the energies at t_{n+1}, as the
+      // constraints' work does (the same time level as the kinetic energy
+      // at t_n and the trapezoidal external work up to t_n).
+      energy.bulk_viscosity_work +=
+        viscous_work_ahead + (started ? 0.5 * values[3] * last_time_step : 0.);
+      viscous_work_ahead = 0.5 * values[3] * new_step;
+      energy.external_work +=
+        values[4] + constraint_work_ahead + values[5] + values[8];
+      constraint_work_ahead = values[6];
+      energy.friction_work += values[7];
+      for (unsigned int g = 0; g < n_cgroups; ++g)
+        {
+          reaction[g] = values[sums.reaction_offset + g];
+          for (unsigned int d = 0; d < 3; ++d)
+            reaction_moment[g][d] =
+              values[sums.reaction_offset + n_cgroups + 3 * g + d];
+          // The same trapezoidal work as the external work's, per group.
+          reaction_work[g] += reaction_work_ahead[g] +
+                              values[sums.reaction_offset + 4 * n_cgroups + g];
+          reaction_work_ahead[g] =
+            values[sums.reaction_offset + 5 * n_cgroups + g];
+        }
+      for (unsigned int g = 0; g < n_groups; ++g)
+        {
+          group_internal_energy[g] = values[sums.group_offset + g];
+          group_motion[g].kinetic_energy =
+            values[sums.group_offset + n_groups + 4 * g];
+          for (unsigned int d = 0; d < 3; ++d)
+            group_motion[g].momentum[d] =
+              values[sums.group_offset + n_groups + 4 * g + 1 + d];
+          // Booked like the model's bulk-viscosity and gravity work.
+          const double group_power =
+            values[sums.group_offset + 5 * n_groups + g];
+          group_work[g].bulk_viscosity +=
+            group_viscous_work_ahead[g] +
+            (started ? 0.5 * group_power * last_time_step : 0.);
+          group_viscous_work_ahead[g] = 0.5 * group_power * new_step;
+          group_work[g].gravity += values[sums.group_offset + 6 * n_groups + g];
+        }
+    }
+
+
+
+    void
+    ExplicitSolver::advance_bodies(const StepWeights &w)
+    {
+      const std::vector<double> &values = sums.values;
+      const double half_step_time       = current_time + 0.5 * w.new_step;
+      energy.rigid_kinetic              = 0.;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          RigidBody &body = bodies[b];
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              body.contact_force[d]  = values[sums.body_offset + 6 * b + d];
+              body.contact_moment[d] = values[sums.body_offset + 6 * b + 3 + d];
+            }
+          // A rigid part's sum holds its weight: the force of the rest of
+          // the model on it is the remainder.
+          if (body.carries_nodes)
+            body.contact_force -= body.weight;
+          // Where the body's motion is prescribed, the drive does the work
+          // minus the solid's force on it times the displacement, by the
+          // trapezoidal rule: the half with the force at t_n on the last
+          // step's increment now (body.velocity is still the one of that
+          // step; see advance_displacements()).
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!body.moves_freely(d))
+              {
+                const double work = -0.5 * body.contact_force[d] *
+                                    (last_time_step * body.velocity[d]);
+                energy.external_work += work;
+                body_energy[b].drive_work += work;
+              }
+          Tensor<1, 3>       v_new = body.velocity;
+          const Tensor<1, 3> prescribed =
+            body.prescribed_velocity ?
+              body.prescribed_velocity(half_step_time) :
+              Tensor<1, 3>();
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!body.moves_freely(d))
+              v_new[d] = prescribed[d];
+            else if (body.carries_nodes)
+              v_new[d] += w.average_step *
+                          (body.contact_force[d] + body.weight[d]) / body.mass;
+            else
+              v_new[d] += w.average_step * (body.contact_force[d] / body.mass +
+                                            settings.gravity[d]);
+          const Tensor<1, 3> v_mean = w.old * body.velocity + w.next * v_new;
+          double body_kinetic       = 0.5 * body.mass * v_mean.norm_square();
+          body.velocity             = v_new;
+          if (body.rotates())
+            {
+              // Angular momentum about the centre, spatial frame:
+              // L^{n+1/2} = L^{n-1/2} + Dt^n M^n (kept, not recomputed from
+              // the turning inertia, so a torque-free body keeps it
+              // exactly), then w^{n+1/2} from L with the inertia at t_n,
+              // I = R I_0 R^T, in the free directions (held ones stay 0;
+              // their L is what the constraint leaves).
+              const Tensor<2, 3> inertia =
+                body.rotation * body.inertia * transpose(body.rotation);
+              const Tensor<1, 3> w_previous = body.angular_velocity;
+              body.angular_momentum += w.average_step * body.contact_moment;
+              std::vector<unsigned int> free;
+              for (unsigned int d = 0; d < 3; ++d)
+                if (body.free_rotation[d])
+                  free.push_back(d);
+              FullMatrix<double> block(free.size(), free.size());
+              Vector<double>     right(free.size()), w_free(free.size());
+              for (unsigned int r = 0; r < free.size(); ++r)
+                {
+                  right(r) = body.angular_momentum[free[r]];
+                  for (unsigned int c = 0; c < free.size(); ++c)
+                    block(r, c) = inertia[free[r]][free[c]];
+                }
+              block.gauss_jordan();
+              block.vmult(w_free, right);
+              Tensor<1, 3> w_next;
+              for (unsigned int r = 0; r < free.size(); ++r)
+                w_next[free[r]] = w_free(r);
+              // The held directions' momentum follows the motion.
+              const Tensor<1, 3> L = inertia * w_next;
+              for (unsigned int d = 0; d < 3; ++d)
+                if (!body.free_rotation[d])
+                  body.angular_momentum[d] = L[d];
+              const Tensor<1, 3> w_mean = w.old * w_previous + w.next * w_next;
+              body_kinetic += 0.5 * w_mean * (inertia * w_mean);
+              body.angular_velocity = w_next;
+            }
+          energy.kinetic += body_kinetic;
+          energy.rigid_kinetic += body_kinetic;
+          body_energy[b].kinetic = body_kinetic;
+          if (body.carries_nodes)
+            for (const RigidPartNodes &part : rigid_parts)
+              if (part.body == b)
+                {
+                  group_motion[part.group].kinetic_energy += body_kinetic;
+                  group_motion[part.group].momentum += body.mass * v_mean;
+                  break;
+                }
+        }
+      set_rigid_node_velocities(w.new_step);
+    }
+
+
+
+    void
+    ExplicitSolver::advance_displacements(const double new_step)
+    {
+      // A body that is held or driven in a direction does work on the
+      // solid there: minus the solid's force on it times its displacement.
+      // (A rigid part's gravity work is its nodes', booked below.)
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          RigidBody         &body      = bodies[b];
+          const Tensor<1, 3> increment = new_step * body.velocity;
+          body.displacement += increment;
+          body.rotation = body.rotation_after(new_step);
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!body.moves_freely(d))
+              {
+                // The half with the force at t_n; the other half, with the
+                // force at t_{n+1}, when that is known.
+                const double work = -0.5 * body.contact_force[d] * increment[d];
+                energy.external_work += work;
+                body_energy[b].drive_work += work;
+              }
+            else if (!body.carries_nodes)
+              {
+                const double work =
+                  body.mass * settings.gravity[d] * increment[d];
+                energy.external_work += work;
+                body_energy[b].gravity_work += work;
+              }
+        }
+      gravity_work_increment = 0.;
+      std::fill(group_gravity_increment.begin(),
+                group_gravity_increment.end(),
+                0.);
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        {
+          const double increment = new_step * v.local_element(i);
+          u.local_element(i) += increment;
+          const double work = gravity_force.local_element(i) * increment;
+          gravity_work_increment += work;
+          group_gravity_increment[dof_group[i]] += work;
+        }
+      // The dofs shared by several parts (the last entry): split by mass,
+      // like their kinetic energy. A rigid part's are its own.
+      for (const SharedDof &shared : shared_dofs)
+        if (!rigid_dof[shared.dof])
+          {
+            const unsigned int i             = shared.dof;
+            const double       work_per_mass = gravity_force.local_element(i) *
+                                         new_step * v.local_element(i) *
+                                         inverse_mass.local_element(i);
+            for (unsigned int g = 0; g < settings.n_groups; ++g)
+              group_gravity_increment[g] +=
+                work_per_mass * shared.mass_by_group[g];
+          }
+    }
+
+
+
+    void
+    ExplicitSolver::run(const double                 end_time,
+                        const std::function<void()> &monitor)
+    {
+      if (!started)
+        start();
+      sums.reinit(bodies.size(),
+                  constraints ? constraints->n_groups() : 0,
+                  settings.n_groups,
+                  shared_dofs.size());
+      auto clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
           // Forces at u^n: -f_int + f_contact + f_gravity + loads.
           lap(clock);
           evaluate_forces();
           clock = std::chrono::steady_clock::now();
+          StepWeights w;
+          w.new_step = next_time_step(clock);
+          w.average_step =
+            started ? 0.5 * (last_time_step + w.new_step) : 0.5 * w.new_step;
+          w.old  = started ? 0.5 : 1.;
+          w.next = started ? 0.5 : 0.;
 
-          // Collective 1: the smallest element and contact steps of the
-          // whole model (a failed element: a negative element step), then
-          // combined: elements and penalty springs act in parallel on
-          // contact nodes.
-          minima[0] =
-            results.failure.failed ? -1. : results.element_time_step;
-          minima[1] = results.contact_time_step;
-          Utilities::MPI::min(ArrayView<const double>(minima, 2),
-                              comm,
-                              ArrayView<double>(minima, 2));
-          timing.communication += lap(clock);
-          if (minima[0] < 0.)
-            {
-              const std::vector<std::string> messages =
-                Utilities::MPI::all_gather(comm, results.failure.message);
-              std::string text;
-              for (const std::string &m : messages)
-                if (!m.empty() && text.empty())
-                  text = m;
-              throw SolverFailure(text + ", at time " + number(current_time) +
-                                  " ms, step " + std::to_string(step_number));
-            }
-          const double stable_step =
-            1. / std::sqrt(1. / (minima[0] * minima[0]) +
-                           1. / (minima[1] * minima[1]));
-          const double new_step = settings.time_step_scale * stable_step;
-          if (new_step < settings.minimum_time_step)
-            throw SolverFailure("the stable time step " + number(new_step) +
-                                " ms fell below the minimum time step " +
-                                number(settings.minimum_time_step) +
-                                " ms at time " + number(current_time) +
-                                " ms, step " + std::to_string(step_number));
-          const double average_step =
-            started ? 0.5 * (last_time_step + new_step) : 0.5 * new_step;
-
-          // Velocities of the solid to the next half step; kinetic energy
-          // at t_n from the mean of the half-step velocities, per group; at
-          // t_0 from the initial velocity itself (the velocity at t_0 is
-          // known there, and the work that leads to v^{1/2} is booked at
-          // t_1). The weights are powers of two: 1/8 m (a + b)^2 and
-          // 1/2 m (a/2 + b/2)^2 are the same to the last bit.
-          const double w_old = started ? 0.5 : 1., w_new = started ? 0.5 : 0.;
-          double kinetic = 0.;
-          std::fill(group_kinetic.begin(), group_kinetic.end(), 0.);
-          std::fill(group_momentum.begin(), group_momentum.end(), 0.);
-          for (unsigned int k = 0; k < shared_dofs.size(); ++k)
-            shared_velocity[k] = v.local_element(shared_dofs[k].dof);
-          for (unsigned int i = 0; i < n_owned; ++i)
-            {
-              const double v_old = v.local_element(i);
-              const double v_new =
-                v_old + average_step * inverse_mass.local_element(i) *
-                          f.local_element(i);
-              v.local_element(i) = v_new;
-              if (rigid_dof[i]) // moves with its body, counted with it
-                continue;
-              const double m = mass.local_element(i);
-              const unsigned int g = dof_group[i];
-              const double v_mean    = w_old * v_old + w_new * v_new;
-              const double kinetic_i = 0.5 * m * v_mean * v_mean;
-              kinetic += kinetic_i;
-              group_kinetic[g] += kinetic_i;
-              group_momentum[3 * g + dof_component[i]] += m * v_mean;
-            }
-          // Prescribed velocities at t_{n+1/2}, their reactions and work
-          // (the kinetic energy of the free update is corrected). Their
-          // work follows the trapezoidal rule per step, as the energies are
-          // at t_n: (r^{n-1} + r^n) / 2 times the displacement increment on
-          // [t_{n-1}, t_n]. The half with r^n counts now, the one on
-          // [t_n, t_{n+1}] with the energies at t_{n+1}. The first step
-          // starts from the velocity at t_0 itself: its work goes to t_1,
-          // with the mean velocity, which also counts a jump from the
-          // initial to the prescribed velocity exactly.
-          double constraint_work = 0., constraint_work_next = 0.;
-          std::fill(local_reaction.begin(), local_reaction.end(), 0.);
-          if (constraints != nullptr)
-            {
-              constraints->begin_step(current_time, new_step);
-              for (const KinematicConstraints::Entry &entry :
-                   constraints->entries())
-                {
-                  const unsigned int i = entry.dof;
-                  const double       m = mass.local_element(i);
-                  const double v_free  = v.local_element(i);
-                  const double v_old =
-                    v_free - average_step * inverse_mass.local_element(i) *
-                               f.local_element(i);
-                  const double v_new =
-                    constraints->half_step_velocity(entry, u.local_element(i));
-                  const double r =
-                    m * (v_new - v_old) / average_step - f.local_element(i);
-                  local_reaction[entry.group] += r;
-                  // Moment about the group's point, current position.
-                  {
-                    Tensor<1, 3> arm;
-                    for (unsigned int d = 0; d < 3; ++d)
-                      arm[d] = entry.X[d] +
-                               u.local_element(entry.node_dofs[d]) -
-                               constraints->moment_point(entry.group)[d];
-                    Tensor<1, 3> force;
-                    force[dof_component[i]] = r;
-                    const Tensor<1, 3> moment = cross_product_3d(arm, force);
-                    for (unsigned int d = 0; d < 3; ++d)
-                      local_reaction[n_cgroups + 3 * entry.group + d] +=
-                        moment[d];
-                  }
-                  double work = 0., work_next;
-                  if (started)
-                    {
-                      work      = 0.5 * r * v_old * last_time_step;
-                      work_next = 0.5 * r * v_new * new_step;
-                    }
-                  else
-                    work_next = r * 0.5 * (v_old + v_new) * average_step;
-                  constraint_work += work;
-                  constraint_work_next += work_next;
-                  local_reaction[4 * n_cgroups + entry.group] += work;
-                  local_reaction[5 * n_cgroups + entry.group] += work_next;
-                  const unsigned int g = dof_group[i];
-                  const double mean_new  = w_old * v_old + w_new * v_new;
-                  const double mean_free = w_old * v_old + w_new * v_free;
-                  const double correction =
-                    0.5 * m *
-                    (mean_new * mean_new - mean_free * mean_free);
-                  kinetic += correction;
-                  group_kinetic[g] += correction;
-                  group_momentum[3 * g + dof_component[i]] +=
-                    m * (mean_new - mean_free);
-                  v.local_element(i) = v_new;
-                }
-            }
-          // Dofs shared by several groups: split by their masses.
-          for (unsigned int k = 0; k < shared_dofs.size(); ++k)
-            {
-              const unsigned int i     = shared_dofs[k].dof;
-              if (rigid_dof[i])
-                continue;
-              const double       v_mid =
-                w_old * shared_velocity[k] + w_new * v.local_element(i);
-              for (unsigned int g = 0; g < n_groups; ++g)
-                {
-                  const double m = shared_dofs[k].mass_by_group[g];
-                  group_kinetic[g] += 0.5 * m * v_mid * v_mid;
-                  group_momentum[3 * g + dof_component[i]] += m * v_mid;
-                }
-            }
+          // The solid's velocities to t_{n+1/2}, the constraints' reactions.
+          advance_velocities(w);
+          apply_constraints(w);
+          add_shared_dofs_motion(w);
           timing.vector_updates += lap(clock);
-
-          // Collective 2: energies, contact forces on the bodies,
-          // reactions, per-group sums.
-          sums[0] = kinetic;
-          sums[1] = results.internal_energy;
-          sums[2] = results.contact_energy;
-          sums[3] = results.bulk_viscosity_power;
-          sums[4] = gravity_work_increment;
-          sums[5] = constraint_work;
-          sums[6] = constraint_work_next;
-          sums[7] = results.friction_dissipation;
-          sums[8] = results.external_work;
-          sums[9] = 0.;
-          for (unsigned int b = 0; b < n_bodies; ++b)
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                sums[body_offset + 6 * b + d] = results.force_on_body[b][d];
-                sums[body_offset + 6 * b + 3 + d] =
-                  results.moment_on_body[b][d];
-              }
-          // The forces on the rigid parts' nodes (with their weight) and
-          // their moments about the bodies' current centres.
-          for (const RigidPartNodes &part : rigid_parts)
-            {
-              const RigidBody &body   = bodies[part.body];
-              const Point<3>   centre = body.current_reference_position();
-              double *const    sum    = &sums[body_offset + 6 * part.body];
-              for (unsigned int n = 0; n < part.dofs.size(); ++n)
-                {
-                  Tensor<1, 3> force, arm;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      const unsigned int i = part.dofs[n][d];
-                      force[d] = f.local_element(i);
-                      arm[d]   = part.X[n][d] + u.local_element(i) - centre[d];
-                    }
-                  const Tensor<1, 3> moment = cross_product_3d(arm, force);
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      sum[d] += force[d];
-                      sum[3 + d] += moment[d];
-                    }
-                }
-            }
-          for (unsigned int g = 0; g < 6 * n_cgroups; ++g)
-            sums[reaction_offset + g] = local_reaction[g];
-          for (unsigned int g = 0; g < n_groups; ++g)
-            {
-              sums[group_offset + g] = results.internal_energy_by_group[g];
-              sums[group_offset + n_groups + 4 * g] = group_kinetic[g];
-              for (unsigned int d = 0; d < 3; ++d)
-                sums[group_offset + n_groups + 4 * g + 1 + d] =
-                  group_momentum[3 * g + d];
-              sums[group_offset + 5 * n_groups + g] =
-                results.bulk_viscosity_power_by_group[g];
-              sums[group_offset + 6 * n_groups + g] =
-                group_gravity_increment[g];
-            }
-          Utilities::MPI::sum(ArrayView<const double>(sums),
-                              comm,
-                              ArrayView<double>(sums));
+          sum_over_ranks();
           timing.communication += lap(clock);
 
-          energy.kinetic  = sums[0];
-          energy.internal = sums[1];
-          energy.contact  = sums[2];
-          // A run that starts deformed (a preloaded state handed over from
-          // the quasi-static solver) starts with its stored energy: in the
-          // elements and in the penalty springs of contacts that are
-          // closed at the start.
-          if (!started)
-            energy.initial += energy.internal + energy.contact;
-          // The viscous forces at t_n act on [t_{n-1/2}, t_{n+1/2}]: the
-          // half on [t_n, t_{n+1/2}] belongs to the energies at t_{n+1}, as
-          // the constraints' work does (the same time level as the kinetic
-          // energy at t_n and the trapezoidal external work up to t_n).
-          energy.bulk_viscosity_work +=
-            viscous_work_ahead + (started ? 0.5 * sums[3] * last_time_step : 0.);
-          viscous_work_ahead = 0.5 * sums[3] * new_step;
-          energy.external_work +=
-            sums[4] + constraint_work_ahead + sums[5] + sums[8];
-          constraint_work_ahead = sums[6];
-          energy.friction_work += sums[7];
-          for (unsigned int g = 0; g < n_cgroups; ++g)
-            {
-              reaction[g] = sums[reaction_offset + g];
-              for (unsigned int d = 0; d < 3; ++d)
-                reaction_moment[g][d] =
-                  sums[reaction_offset + n_cgroups + 3 * g + d];
-              // The same trapezoidal work as the external work's, per group.
-              reaction_work[g] += reaction_work_ahead[g] +
-                                  sums[reaction_offset + 4 * n_cgroups + g];
-              reaction_work_ahead[g] =
-                sums[reaction_offset + 5 * n_cgroups + g];
-            }
-          for (unsigned int g = 0; g < n_groups; ++g)
-            {
-              group_internal_energy[g] = sums[group_offset + g];
-              group_motion[g].kinetic_energy =
-                sums[group_offset + n_groups + 4 * g];
-              for (unsigned int d = 0; d < 3; ++d)
-                group_motion[g].momentum[d] =
-                  sums[group_offset + n_groups + 4 * g + 1 + d];
-              // Booked like the model's bulk-viscosity and gravity work.
-              const double group_power = sums[group_offset + 5 * n_groups + g];
-              group_work[g].bulk_viscosity +=
-                group_viscous_work_ahead[g] +
-                (started ? 0.5 * group_power * last_time_step : 0.);
-              group_viscous_work_ahead[g] = 0.5 * group_power * new_step;
-              group_work[g].gravity += sums[group_offset + 6 * n_groups + g];
-            }
-          const double half_step_time = current_time + 0.5 * new_step;
-          energy.rigid_kinetic        = 0.;
-          for (unsigned int b = 0; b < n_bodies; ++b)
-            {
-              RigidBody &body = bodies[b];
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  body.contact_force[d]  = sums[body_offset + 6 * b + d];
-                  body.contact_moment[d] = sums[body_offset + 6 * b + 3 + d];
-                }
-              // A rigid part's sum holds its weight: the force of the rest
-              // of the model on it is the remainder.
-              if (body.carries_nodes)
-                body.contact_force -= body.weight;
-              // Where the body's motion is prescribed, the drive does the
-              // work minus the solid's force on it times the displacement,
-              // by the trapezoidal rule: the half with the force at t_n on
-              // the last step's increment now (body.velocity is still the
-              // one of that step; see the displacement update).
-              for (unsigned int d = 0; d < 3; ++d)
-                if (!body.moves_freely(d))
-                  {
-                    const double work = -0.5 * body.contact_force[d] *
-                                        (last_time_step * body.velocity[d]);
-                    energy.external_work += work;
-                    body_energy[b].drive_work += work;
-                  }
-              Tensor<1, 3> v_new = body.velocity;
-              const Tensor<1, 3> prescribed =
-                body.prescribed_velocity ?
-                  body.prescribed_velocity(half_step_time) :
-                  Tensor<1, 3>();
-              for (unsigned int d = 0; d < 3; ++d)
-                if (!body.moves_freely(d))
-                  v_new[d] = prescribed[d];
-                else if (body.carries_nodes)
-                  v_new[d] += average_step *
-                              (body.contact_force[d] + body.weight[d]) /
-                              body.mass;
-                else
-                  v_new[d] += average_step *
-                              (body.contact_force[d] / body.mass +
-                               settings.gravity[d]);
-              const Tensor<1, 3> v_mean =
-                w_old * body.velocity + w_new * v_new;
-              double body_kinetic = 0.5 * body.mass * v_mean.norm_square();
-              body.velocity = v_new;
-              if (body.rotates())
-                {
-                  // Angular momentum about the centre, spatial frame:
-                  // L^{n+1/2} = L^{n-1/2} + Dt^n M^n (kept, not recomputed
-                  // from the turning inertia, so a torque-free body keeps
-                  // it exactly), then w^{n+1/2} from L with the inertia at
-                  // t_n, I = R I_0 R^T, in the free directions (held ones
-                  // stay 0; their L is what the constraint leaves).
-                  const Tensor<2, 3> inertia =
-                    body.rotation * body.inertia * transpose(body.rotation);
-                  const Tensor<1, 3> w_previous = body.angular_velocity;
-                  body.angular_momentum += average_step * body.contact_moment;
-                  std::vector<unsigned int> free;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    if (body.free_rotation[d])
-                      free.push_back(d);
-                  FullMatrix<double> block(free.size(), free.size());
-                  Vector<double>     right(free.size()), w_free(free.size());
-                  for (unsigned int r = 0; r < free.size(); ++r)
-                    {
-                      right(r) = body.angular_momentum[free[r]];
-                      for (unsigned int c = 0; c < free.size(); ++c)
-                        block(r, c) = inertia[free[r]][free[c]];
-                    }
-                  block.gauss_jordan();
-                  block.vmult(w_free, right);
-                  Tensor<1, 3> w_next;
-                  for (unsigned int r = 0; r < free.size(); ++r)
-                    w_next[free[r]] = w_free(r);
-                  // The held directions' momentum follows the motion.
-                  const Tensor<1, 3> L = inertia * w_next;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    if (!body.free_rotation[d])
-                      body.angular_momentum[d] = L[d];
-                  const Tensor<1, 3> w_mean =
-                    w_old * w_previous + w_new * w_next;
-                  body_kinetic += 0.5 * w_mean * (inertia * w_mean);
-                  body.angular_velocity = w_next;
-                }
-              energy.kinetic += body_kinetic;
-              energy.rigid_kinetic += body_kinetic;
-              body_energy[b].kinetic = body_kinetic;
-              if (body.carries_nodes)
-                for (const RigidPartNodes &part : rigid_parts)
-                  if (part.body == b)
-                    {
-                      group_motion[part.group].kinetic_energy += body_kinetic;
-                      group_motion[part.group].momentum +=
-                        body.mass * v_mean;
-                      break;
-                    }
-            }
-          set_rigid_node_velocities(new_step);
-
+          // The energies at t_n, the bodies to t_{n+1/2}.
+          book_sums(w.new_step);
+          advance_bodies(w);
           energy.largest_energy =
             std::max(energy.largest_energy, energy.current_scale());
           energy.largest_deformable =
             std::max(energy.largest_deformable, energy.deformable_scale());
 
           // Output sees the state at t_n and the step about to be taken.
-          last_time_step = new_step;
+          last_time_step = w.new_step;
           lap(clock);
           monitor();
           timing.output += lap(clock);
 
-          // Displacements to t_{n+1}. A body that is held or driven in a
-          // direction does work on the solid there: minus the solid's
-          // force on it times its displacement.
-          // (A rigid part's gravity work is its nodes', booked below.)
-          for (unsigned int b = 0; b < n_bodies; ++b)
-            {
-              RigidBody &        body      = bodies[b];
-              const Tensor<1, 3> increment = new_step * body.velocity;
-              body.displacement += increment;
-              body.rotation = body.rotation_after(new_step);
-              for (unsigned int d = 0; d < 3; ++d)
-                if (!body.moves_freely(d))
-                  {
-                    // The half with the force at t_n; the other half, with
-                    // the force at t_{n+1}, when that is known.
-                    const double work =
-                      -0.5 * body.contact_force[d] * increment[d];
-                    energy.external_work += work;
-                    body_energy[b].drive_work += work;
-                  }
-                else if (!body.carries_nodes)
-                  {
-                    const double work =
-                      body.mass * settings.gravity[d] * increment[d];
-                    energy.external_work += work;
-                    body_energy[b].gravity_work += work;
-                  }
-            }
-          gravity_work_increment = 0.;
-          std::fill(group_gravity_increment.begin(),
-                    group_gravity_increment.end(),
-                    0.);
-          for (unsigned int i = 0; i < n_owned; ++i)
-            {
-              const double increment = new_step * v.local_element(i);
-              u.local_element(i) += increment;
-              const double work = gravity_force.local_element(i) * increment;
-              gravity_work_increment += work;
-              group_gravity_increment[dof_group[i]] += work;
-            }
-          // The dofs shared by several parts (the last entry): split by
-          // mass, like their kinetic energy. A rigid part's are its own.
-          for (const SharedDof &shared : shared_dofs)
-            if (!rigid_dof[shared.dof])
-              {
-                const unsigned int i = shared.dof;
-                const double       work_per_mass =
-                  gravity_force.local_element(i) * new_step *
-                  v.local_element(i) * inverse_mass.local_element(i);
-                for (unsigned int g = 0; g < n_groups; ++g)
-                  group_gravity_increment[g] +=
-                    work_per_mass * shared.mass_by_group[g];
-              }
+          advance_displacements(w.new_step);
           for (model::ForceContribution *contribution : contributions)
             contribution->accept_step();
           timing.vector_updates += lap(clock);
@@ -1159,7 +1226,7 @@ namespace rubberdyn
           v.update_ghost_values();
           timing.communication += lap(clock);
 
-          current_time += new_step;
+          current_time += w.new_step;
           ++step_number;
           started = true;
         }

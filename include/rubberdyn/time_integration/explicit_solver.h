@@ -10,12 +10,13 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <array>
+#include <chrono>
 #include <functional>
 #include <iosfwd>
 #include <memory>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -460,9 +461,108 @@ namespace rubberdyn
       const StepTimings &timings() const { return timing; }
 
     private:
+      /**
+       * The sizes of one step: the new step dt^{n+1/2} (ms), the velocity
+       * update's dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2 (ms; half the new
+       * step at the start), and the weights of the old and new half-step
+       * velocities in the velocity at t_n. At t_0 the velocity is the
+       * initial one itself (old 1, next 0): it is known there, and the work
+       * that leads to v^{1/2} is booked at t_1. The weights are powers of
+       * two: 1/8 m (a + b)^2 and 1/2 m (a/2 + b/2)^2 are the same to the
+       * last bit.
+       */
+      struct StepWeights
+      {
+        double new_step = 0., average_step = 0., old = 0., next = 0.;
+      };
+
+      /**
+       * One step's sums: this rank's terms, and the vector that collective
+       * 2 sums over all ranks, laid out as: ten energy terms (kinetic,
+       * internal, contact, bulk-viscosity power, gravity work, the
+       * constraints' work up to t_n and ahead, friction work, the
+       * contributions' external work, a spare), then per body its force
+       * and moment, per constraint group its reaction, moment, work up to
+       * t_n and ahead, and per element group its internal energy, kinetic
+       * energy and momentum, bulk-viscosity power and gravity work.
+       */
+      struct StepSums
+      {
+        static constexpr unsigned int n_energy_sums = 10;
+        unsigned int body_offset = 0, reaction_offset = 0, moment_offset = 0,
+                     group_offset = 0;
+        /** Collective 2's vector (summed over all ranks by sum_over_ranks()).
+         */
+        std::vector<double> values;
+        /** Per constraint group: reaction, moment (3), work, work ahead. */
+        std::vector<double> local_reaction;
+        /** The shared dofs' velocities before the update. */
+        std::vector<double> shared_velocity;
+        /** Kinetic energy and momentum per group, one more bucket for the
+         * shared dofs (split by mass afterwards). */
+        std::vector<double> group_kinetic, group_momentum;
+        /** This rank's kinetic energy and constraint work (and ahead). */
+        double kinetic = 0., constraint_work = 0., constraint_work_next = 0.;
+
+        /** Size for the model (zeros). */
+        void
+        reinit(const unsigned int n_bodies,
+               const unsigned int n_constraint_groups,
+               const unsigned int n_groups,
+               const unsigned int n_shared_dofs);
+      };
+
+      /**
+       * Before the first step: the constrained dofs' initial velocities
+       * and the initial energy.
+       */
+      void
+      start();
+
       /** Evaluate all contributions at u^n into f; fills `results`. */
       void
       evaluate_forces();
+
+      /**
+       * Collective 1: the new stable step, scaled (ms), from the elements'
+       * and the contacts' smallest; a failed element or a step below the
+       * minimum throws SolverFailure. Books the collective's time from
+       * @p clock.
+       */
+      double
+      next_time_step(std::chrono::steady_clock::time_point &clock);
+
+      /** The solid's owned velocities to t_{n+1/2}; its kinetic energy at
+       * t_n, per group too (into `sums`). */
+      void
+      advance_velocities(const StepWeights &w);
+
+      /** The constrained dofs' velocities, reactions and their work (into
+       * `sums`). */
+      void
+      apply_constraints(const StepWeights &w);
+
+      /** The kinetic energy and momentum of dofs shared by groups. */
+      void
+      add_shared_dofs_motion(const StepWeights &w);
+
+      /** Collective 2: the step's sums over all ranks. */
+      void
+      sum_over_ranks();
+
+      /** The energies, reactions and group sums at t_n from the sums. */
+      void
+      book_sums(const double new_step);
+
+      /** The rigid bodies' velocities to t_{n+1/2}, their kinetic energy
+       * and their nodes' velocities. */
+      void
+      advance_bodies(const StepWeights &w);
+
+      /** Displacements and bodies to t_{n+1}, with the drives' and
+       * gravity's work. */
+      void
+      advance_displacements(const double new_step);
 
       std::vector<model::ForceContribution *>            contributions;
       std::vector<RigidBody> &                           bodies;
@@ -533,6 +633,7 @@ namespace rubberdyn
        */
       double viscous_work_ahead = 0.;
       model::ContributionResults  results;
+      StepSums                    sums;
       StepTimings                 timing;
     };
   } // namespace time_integration
