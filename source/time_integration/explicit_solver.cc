@@ -760,15 +760,21 @@ namespace rubberdyn
     {
       // Velocities of the solid to the next half step; kinetic energy at
       // t_n from the mean of the half-step velocities, per group (StepWeights).
-      sums.kinetic = 0.;
       std::fill(sums.group_kinetic.begin(), sums.group_kinetic.end(), 0.);
       std::fill(sums.group_momentum.begin(), sums.group_momentum.end(), 0.);
       for (unsigned int k = 0; k < shared_dofs.size(); ++k)
         sums.shared_velocity[k] = v.local_element(shared_dofs[k].dof);
-      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      // (Locals: the stores into v may alias anything behind a reference.)
+      const unsigned int n_owned      = partitioner->locally_owned_size();
+      const double       average_step = w.average_step, w_old = w.old,
+                   w_new = w.next;
+      double *const      group_kinetic  = sums.group_kinetic.data();
+      double *const      group_momentum = sums.group_momentum.data();
+      double             kinetic        = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
         {
           const double v_old = v.local_element(i);
-          const double v_new = v_old + w.average_step *
+          const double v_new = v_old + average_step *
                                          inverse_mass.local_element(i) *
                                          f.local_element(i);
           v.local_element(i) = v_new;
@@ -776,12 +782,13 @@ namespace rubberdyn
             continue;
           const double       m         = mass.local_element(i);
           const unsigned int g         = dof_group[i];
-          const double       v_mean    = w.old * v_old + w.next * v_new;
+          const double       v_mean    = w_old * v_old + w_new * v_new;
           const double       kinetic_i = 0.5 * m * v_mean * v_mean;
-          sums.kinetic += kinetic_i;
-          sums.group_kinetic[g] += kinetic_i;
-          sums.group_momentum[3 * g + dof_component[i]] += m * v_mean;
+          kinetic += kinetic_i;
+          group_kinetic[g] += kinetic_i;
+          group_momentum[3 * g + dof_component[i]] += m * v_mean;
         }
+      sums.kinetic = kinetic;
     }
 
 
@@ -1143,18 +1150,20 @@ namespace rubberdyn
                 body_energy[b].gravity_work += work;
               }
         }
-      gravity_work_increment = 0.;
       std::fill(group_gravity_increment.begin(),
                 group_gravity_increment.end(),
                 0.);
-      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      double             gravity_work = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
         {
           const double increment = new_step * v.local_element(i);
           u.local_element(i) += increment;
           const double work = gravity_force.local_element(i) * increment;
-          gravity_work_increment += work;
+          gravity_work += work;
           group_gravity_increment[dof_group[i]] += work;
         }
+      gravity_work_increment = gravity_work;
       // The dofs shared by several parts (the last entry): split by mass,
       // like their kinetic energy. A rigid part's are its own.
       for (const SharedDof &shared : shared_dofs)
