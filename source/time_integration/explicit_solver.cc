@@ -765,12 +765,11 @@ namespace rubberdyn
       for (unsigned int k = 0; k < shared_dofs.size(); ++k)
         sums.shared_velocity[k] = v.local_element(shared_dofs[k].dof);
       // (Locals: the stores into v may alias anything behind a reference.)
-      const unsigned int n_owned      = partitioner->locally_owned_size();
-      const double       average_step = w.average_step, w_old = w.old,
-                   w_new = w.next;
-      double *const      group_kinetic  = sums.group_kinetic.data();
-      double *const      group_momentum = sums.group_momentum.data();
-      double             kinetic        = 0.;
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      const double average_step = w.average_step, w_old = w.old, w_new = w.next;
+      double *const group_kinetic  = sums.group_kinetic.data();
+      double *const group_momentum = sums.group_momentum.data();
+      double        kinetic        = 0.;
       for (unsigned int i = 0; i < n_owned; ++i)
         {
           const double v_old = v.local_element(i);
@@ -1153,7 +1152,7 @@ namespace rubberdyn
       std::fill(group_gravity_increment.begin(),
                 group_gravity_increment.end(),
                 0.);
-      const unsigned int n_owned = partitioner->locally_owned_size();
+      const unsigned int n_owned      = partitioner->locally_owned_size();
       double             gravity_work = 0.;
       for (unsigned int i = 0; i < n_owned; ++i)
         {
