@@ -677,10 +677,9 @@ namespace rubberdyn
     {
       body_offset     = n_energy_sums;
       reaction_offset = body_offset + 6 * n_bodies;
-      moment_offset   = reaction_offset + n_constraint_groups;
       // Per constraint group: reaction, moment (3), work up to t_n and its
       // share on [t_n, t_{n+1}].
-      group_offset = moment_offset + 5 * n_constraint_groups;
+      group_offset = reaction_offset + 6 * n_constraint_groups;
       values.assign(group_offset + 7 * n_groups, 0.);
       local_reaction.assign(6 * n_constraint_groups, 0.);
       shared_velocity.assign(n_shared_dofs, 0.);

@@ -489,8 +489,7 @@ namespace rubberdyn
       struct StepSums
       {
         static constexpr unsigned int n_energy_sums = 10;
-        unsigned int body_offset = 0, reaction_offset = 0, moment_offset = 0,
-                     group_offset = 0;
+        unsigned int body_offset = 0, reaction_offset = 0, group_offset = 0;
         /** Collective 2's vector (summed over all ranks by sum_over_ranks()).
          */
         std::vector<double> values;
