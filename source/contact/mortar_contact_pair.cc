@@ -463,16 +463,18 @@ namespace rubberdyn
       FacetCorners master_corners;
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
-          const auto             &s = facet_nodes[pass.gap_facets[i]];
+          const auto             &s           = facet_nodes[pass.gap_facets[i]];
           const MortarSlaveFacet &slave_facet = slave_facets[i];
-          const double clearance = 1e-9 * (x[s[2]] - x[s[0]]).norm();
-          bool         open      = true;
+          const double            clearance = 1e-9 * (x[s[2]] - x[s[0]]).norm();
+          bool                    open      = true;
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
               for (unsigned int k = 0; k < 4; ++k)
                 master_corners[k] = x[mc[k]];
-              if (!slave_facet.clearly_open(master_corners, clearance))
+              if (!slave_facet.clearly_open(master_corners,
+                                            clearance,
+                                            &master_bounds_of(m)))
                 {
                   open = false;
                   break;
@@ -492,7 +494,7 @@ namespace rubberdyn
                ++j)
             {
               const unsigned int i = pass.node_gap_facets[j];
-              open = open_facet[i] &&
+              open                 = open_facet[i] &&
                      normal[node] * slave_facets[i].unit_normal() > 0.;
             }
           open_node[node] = open;
@@ -599,6 +601,11 @@ namespace rubberdyn
             slave_corners[a] = x[s[a]];
           slave_facets.emplace_back(slave_corners);
         }
+      // Each candidate master facet's bounds once for all its slave
+      // facets, when first asked for (master_bounds_of()).
+      master_bounds.resize(facet_nodes.size());
+      master_bounds_stamp.resize(facet_nodes.size(), 0);
+      ++bounds_evaluation;
       if (skip_open)
         mark_open_nodes(pass);
       if (reuse)
@@ -649,10 +656,10 @@ namespace rubberdyn
               // The kept integrals at the current positions, each within
               // the capture margin as a new one must be
               // (mortar_segment_weight()).
-              bool hold = kept.valid &&
-                          kept_segments_hold(kept,
-                                             slave_corners,
-                                             slave_facet.unit_normal());
+              bool hold =
+                kept.valid && kept_segments_hold(kept,
+                                                 slave_corners,
+                                                 slave_facet.unit_normal());
               kept_weighted.resize(kept.segments.size());
               for (unsigned int k = 0; hold && k < kept.segments.size(); ++k)
                 {
@@ -688,7 +695,10 @@ namespace rubberdyn
               const auto &mc = facet_nodes[m];
               for (unsigned int k = 0; k < 4; ++k)
                 master_corners[k] = x[mc[k]];
-              if (!slave_facet.integrate(master_corners, segment))
+              if (!slave_facet.integrate(master_corners,
+                                         segment,
+                                         4,
+                                         &master_bounds_of(m)))
                 continue;
               const double w = mortar_segment_weight(slave_corners,
                                                      master_corners,
@@ -785,8 +795,8 @@ namespace rubberdyn
                               data.data(),
                               data.size(),
                               "contact pair kept segments");
-      const double *value = data.data();
-      const auto    next  = [&]() { return *value++; };
+      const double *value   = data.data();
+      const auto    next    = [&]() { return *value++; };
       const auto    corners = [&](FacetCorners &c) {
         for (Point<3> &p : c)
           for (unsigned int d = 0; d < 3; ++d)
@@ -928,8 +938,8 @@ namespace rubberdyn
     MortarContactPair::energy_error() const
     {
       const Implementation::WorkAudit &audit = impl->audit;
-      return audit.started ? audit.trial_work + impl->energy +
-                               friction_work() - audit.energy_at_start :
+      return audit.started ? audit.trial_work + impl->energy + friction_work() -
+                               audit.energy_at_start :
                              0.;
     }
 
@@ -968,6 +978,275 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /** An active node's share of the columns: pressure @p p, tangential
+       * traction @p t (GPa) on its covered area @p A (mm^2). */
+      void
+      book_active_node(ContactPairStatistics &statistics,
+                       const double           p,
+                       const double           t,
+                       const double           A)
+      {
+        statistics.normal_force += p * A;
+        statistics.tangential_force += t * A;
+        statistics.max_pressure = std::max(statistics.max_pressure, p);
+        statistics.min_pressure = std::min(statistics.min_pressure, p);
+        statistics.contact_area += A;
+        ++statistics.active_nodes;
+      }
+    } // namespace
+
+
+
+    void
+    MortarContactPair::Implementation::prepare_evaluation(
+      const model::EvaluationPoint &point)
+    {
+      u_pair.update_ghost_values_finish();
+      update_positions(u_pair);
+      // (The quasi-static solver has no masses: no stable step there.)
+      if (node_mass.empty() && point.mass.linfty_norm() > 0.)
+        {
+          // The masses do not change during a run: gathered once.
+          VectorType mass(partitioner);
+          mass.copy_locally_owned_data_from(point.mass);
+          mass.update_ghost_values();
+          node_mass.resize(x.size());
+          for (unsigned int n = 0; n < x.size(); ++n)
+            node_mass[n] = mass.local_element(node_dofs[n][0]);
+          follow_pending = true;
+        }
+      if (follow_pending)
+        {
+          set_penalty();
+          follow_pending = false;
+        }
+      // What the penalty updates since the accepted state added to the
+      // springs: (eps - eps_accepted) A g^2 / 2 normal, and the accepted
+      // tangential spring's energy A |t|^2 / 2 eps at the new penalty.
+      trial_stiffness_energy = 0.;
+      if (definition.type != model::ContactPairDefinition::Type::tied)
+        search_if_needed();
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::tied_tractions(
+      Pass                  &pass,
+      EvaluationEnergies    &energies,
+      ContactPairStatistics &statistics)
+    {
+      // The change of each tied node's weighted gap vector: the reference
+      // integrals times the displacements.
+      for (const unsigned int node : pass.nodes)
+        gap[node] = Tensor<1, 3>();
+      for (const StoredSegment &s : pass.segments)
+        {
+          const auto &sn = facet_nodes[pass.gap_facets[s.slave]];
+          const auto &mn = facet_nodes[s.master];
+          for (unsigned int a = 0; a < 4; ++a)
+            for (unsigned int b = 0; b < 4; ++b)
+              gap[sn[a]] +=
+                s.integrals.D[a][b] * (x[sn[b]] - node_reference[sn[b]]) -
+                s.integrals.M[a][b] * (x[mn[b]] - node_reference[mn[b]]);
+        }
+      compute_normals(pass);
+      for (const unsigned int node : pass.nodes)
+        {
+          traction[node] = Tensor<1, 3>();
+          if (!pass.tied[node])
+            continue;
+          const double       A    = pass.tied_area[node];
+          const Tensor<1, 3> mean = gap[node] / A;
+          traction[node]          = -pass.penalty * mean;
+          if (pass.accepted_penalty >= 0. && pass.counted[node])
+            trial_stiffness_energy +=
+              0.5 * (pass.penalty - pass.accepted_penalty) * A * (mean * mean);
+          const double p            = -(traction[node] * normal[node]);
+          pass.shown_gap[node]      = normal[node] * mean;
+          pass.shown_pressure[node] = p;
+          if (pass.counted[node])
+            {
+              energies.stored += 0.5 * pass.penalty * A * (mean * mean);
+              book_active_node(statistics,
+                               p,
+                               (traction[node] + p * normal[node]).norm(),
+                               A);
+              statistics.max_penetration =
+                std::max(statistics.max_penetration, pass.shown_gap[node]);
+            }
+        }
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::contact_tractions(
+      Pass                  &pass,
+      const double           time,
+      EvaluationEnergies    &energies,
+      ContactPairStatistics &statistics)
+    {
+      compute_normals(pass);
+      // Segments are kept only in explicit runs (the masses known): the
+      // quasi-static residual must be the tangent's.
+      shown_gaps_partial |=
+        integrate(pass,
+                  false,
+                  true,
+                  definition.segment_reuse_slip > 0. && !node_mass.empty());
+      const double step = time - time_accepted;
+      const bool   book = pass.accepted_penalty >= 0.;
+      // The accepted springs' energy at the present penalty.
+      const double spring_scale =
+        book ? pass.accepted_penalty / pass.penalty : 1.;
+      for (const unsigned int node : pass.nodes)
+        {
+          traction[node] = Tensor<1, 3>();
+          const double A = area[node];
+          const double g = A > 0. ? -(normal[node] * gap[node]) / A : 0.;
+          const double accepted_spring =
+            coulomb ? spring_scale * pass.accepted_spring_energy[node] : 0.;
+          if (book && pass.counted[node])
+            trial_stiffness_energy +=
+              (accepted_spring -
+               (coulomb ? pass.accepted_spring_energy[node] : 0.)) +
+              (A > 0. && g < 0. ?
+                 0.5 * (pass.penalty - pass.accepted_penalty) * A * g * g :
+                 0.);
+          pass.shown_gap[node]      = g;
+          pass.shown_pressure[node] = g < 0. ? -pass.penalty * g : 0.;
+          if (coulomb)
+            pass.trial_slip_distance[node] = pass.accepted_slip_distance[node];
+          if (A > 0. && pass.counted[node])
+            statistics.max_penetration =
+              std::max(statistics.max_penetration, -g);
+          if (!(A > 0.) || !(g < 0.))
+            {
+              // Open: a frictional node forgets its spring, whose energy is
+              // dissipated.
+              if (coulomb)
+                {
+                  pass.trial_tangential[node]    = Tensor<1, 3>();
+                  pass.trial_spring_energy[node] = 0.;
+                  if (pass.counted[node])
+                    {
+                      energies.dissipated += accepted_spring;
+                      if (trace.enabled)
+                        trace.dissipation[node] += accepted_spring;
+                    }
+                }
+              continue;
+            }
+          const Tensor<1, 3> &n = normal[node];
+          const double        p = -pass.penalty * g;
+          traction[node]        = -p * n;
+          Tensor<1, 3> tangential;
+          bool         slipping = false;
+          if (coulomb)
+            {
+              Tensor<1, 3> old, increment;
+              tangential =
+                coulomb_return_mapping(pass.accepted_tangential[node],
+                                       n,
+                                       slip[node],
+                                       A,
+                                       p,
+                                       pass.penalty,
+                                       step,
+                                       definition,
+                                       old,
+                                       increment,
+                                       slipping);
+              if (slipping)
+                pass.trial_slip_distance[node] += increment.norm();
+              traction[node] += tangential;
+              pass.trial_tangential[node] = tangential;
+              const double spring =
+                0.5 * A * (tangential * tangential) / pass.penalty;
+              pass.trial_spring_energy[node] = spring;
+              if (pass.counted[node])
+                {
+                  // The work done on the spring over the step (trapezoidal)
+                  // less what it stores.
+                  const double node_dissipation =
+                    -0.5 * A * ((old + tangential) * increment) -
+                    (spring - accepted_spring);
+                  energies.dissipated += node_dissipation;
+                  energies.stored += spring;
+                  if (trace.enabled)
+                    {
+                      trace.dissipation[node] += node_dissipation;
+                      trace.slipping[node] = slipping;
+                    }
+                }
+            }
+          if (pass.counted[node])
+            {
+              energies.stored += 0.5 * pass.penalty * A * g * g;
+              book_active_node(statistics, p, tangential.norm(), A);
+              if (slipping)
+                ++statistics.slipping_nodes;
+            }
+        }
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::scatter_segment_forces(
+      const Pass            &pass,
+      ContactPairStatistics &statistics)
+    {
+      const bool tied =
+        definition.type == model::ContactPairDefinition::Type::tied;
+      for (const StoredSegment &s : pass.segments)
+        {
+          if (!owns(pass, s.slave))
+            continue;
+          const auto &sn = facet_nodes[pass.gap_facets[s.slave]];
+          const auto &mn = facet_nodes[s.master];
+          for (unsigned int a = 0; a < 4; ++a)
+            {
+              if (traction[sn[a]].norm_square() == 0.)
+                continue;
+              // The segment's traction: its normal part follows the master
+              // face's slope (segment_traction()).
+              const double       p = tied ? 0. : pass.shown_pressure[sn[a]];
+              const Tensor<1, 3> t =
+                s.weight * segment_traction(traction[sn[a]],
+                                            p,
+                                            normal[sn[a]],
+                                            s.integrals.normal,
+                                            s.integrals.slope);
+              for (unsigned int b = 0; b < 4; ++b)
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    const double on_slave = s.integrals.D[a][b] * t[d];
+                    f_pair.local_element(node_dofs[sn[b]][d]) += on_slave;
+                    statistics.force[d] += on_slave;
+                    f_pair.local_element(node_dofs[mn[b]][d]) -=
+                      s.integrals.M[a][b] * t[d];
+                  }
+            }
+          if (tied || s.weight_gradient.norm_square() == 0.)
+            continue;
+          Tensor<1, 3> on_slave[4], on_master[4];
+          weight_forces(pass, s, on_slave, on_master);
+          for (unsigned int b = 0; b < 4; ++b)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                f_pair.local_element(node_dofs[sn[b]][d]) += on_slave[b][d];
+                statistics.force[d] += on_slave[b][d];
+                f_pair.local_element(node_dofs[mn[b]][d]) += on_master[b][d];
+              }
+        }
+    }
+
+
+
     void
     MortarContactPair::compute_forces(const model::EvaluationPoint &point,
                                       model::ContributionResults   &results)
@@ -976,286 +1255,46 @@ namespace rubberdyn
       if (I.exchange != Implementation::Exchange::positions_sent)
         start_forces(point);
       const auto start = std::chrono::steady_clock::now();
-      const bool tied =
-        I.definition.type == model::ContactPairDefinition::Type::tied;
-      I.u_pair.update_ghost_values_finish();
-      I.update_positions(I.u_pair);
-      // (The quasi-static solver has no masses: no stable step there.)
-      if (I.node_mass.empty() && point.mass.linfty_norm() > 0.)
-        {
-          // The masses do not change during a run: gathered once.
-          VectorType mass(I.partitioner);
-          mass.copy_locally_owned_data_from(point.mass);
-          mass.update_ghost_values();
-          I.node_mass.resize(I.x.size());
-          for (unsigned int n = 0; n < I.x.size(); ++n)
-            I.node_mass[n] = mass.local_element(I.node_dofs[n][0]);
-          I.follow_pending = true;
-        }
-      if (I.follow_pending)
-        {
-          I.set_penalty();
-          I.follow_pending = false;
-        }
-      // What the penalty updates since the accepted state added to the
-      // springs: (eps - eps_accepted) A g^2 / 2 normal, and the accepted
-      // tangential spring's energy A |t|^2 / 2 eps at the new penalty.
-      I.trial_stiffness_energy = 0.;
-      if (!tied)
-        I.search_if_needed();
+      I.prepare_evaluation(point);
 
       statistics           = ContactPairStatistics();
       I.shown_gaps_partial = false;
-      double energy        = 0.;
-      double dissipation = 0.;
       if (I.trace.enabled)
         {
           I.trace.dissipation.assign(I.x.size(), 0.);
           I.trace.slipping.assign(I.x.size(), 0);
         }
-      // An active node's share of the columns: pressure p, tangential
-      // traction t (GPa) on its covered area A (mm^2).
-      const auto book_active =
-        [this](const double p, const double t, const double A) {
-          statistics.normal_force += p * A;
-          statistics.tangential_force += t * A;
-          statistics.max_pressure = std::max(statistics.max_pressure, p);
-          statistics.min_pressure = std::min(statistics.min_pressure, p);
-          statistics.contact_area += A;
-          ++statistics.active_nodes;
-        };
       // (compress() left the ghost entries at zero.)
       for (const unsigned int i : I.owned_surface_dofs)
         I.f_pair.local_element(i) = 0.;
+      Implementation::EvaluationEnergies energies;
       for (Implementation::Pass &pass : I.passes)
         {
-          if (tied)
-            {
-              // The change of each tied node's weighted gap vector: the
-              // reference integrals times the displacements.
-              for (const unsigned int node : pass.nodes)
-                I.gap[node] = Tensor<1, 3>();
-              for (const StoredSegment &s : pass.segments)
-                {
-                  const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
-                  const auto &mn = I.facet_nodes[s.master];
-                  for (unsigned int a = 0; a < 4; ++a)
-                    for (unsigned int b = 0; b < 4; ++b)
-                      I.gap[sn[a]] += s.integrals.D[a][b] *
-                                        (I.x[sn[b]] - I.node_reference[sn[b]]) -
-                                      s.integrals.M[a][b] *
-                                        (I.x[mn[b]] - I.node_reference[mn[b]]);
-                }
-              I.compute_normals(pass);
-              for (const unsigned int node : pass.nodes)
-                {
-                  I.traction[node] = Tensor<1, 3>();
-                  if (!pass.tied[node])
-                    continue;
-                  const double       A    = pass.tied_area[node];
-                  const Tensor<1, 3> mean = I.gap[node] / A;
-                  I.traction[node]        = -pass.penalty * mean;
-                  if (pass.accepted_penalty >= 0. && pass.counted[node])
-                    I.trial_stiffness_energy +=
-                      0.5 * (pass.penalty - pass.accepted_penalty) * A *
-                      (mean * mean);
-                  const double p       = -(I.traction[node] * I.normal[node]);
-                  pass.shown_gap[node] = I.normal[node] * mean;
-                  pass.shown_pressure[node] = p;
-                  if (pass.counted[node])
-                    {
-                      energy += 0.5 * pass.penalty * A * (mean * mean);
-                      book_active(
-                        p,
-                        (I.traction[node] + p * I.normal[node]).norm(),
-                        A);
-                      statistics.max_penetration =
-                        std::max(statistics.max_penetration,
-                                 pass.shown_gap[node]);
-                    }
-                }
-            }
+          if (I.definition.type == model::ContactPairDefinition::Type::tied)
+            I.tied_tractions(pass, energies, statistics);
           else
-            {
-              I.compute_normals(pass);
-              // Segments are kept only in explicit runs (the masses known):
-              // the quasi-static residual must be the tangent's.
-              I.shown_gaps_partial |=
-                I.integrate(pass,
-                            false,
-                            true,
-                            I.definition.segment_reuse_slip > 0. &&
-                              !I.node_mass.empty());
-              const model::ContactPairDefinition &def = I.definition;
-              const double step = point.time - I.time_accepted;
-              const bool   book = pass.accepted_penalty >= 0.;
-              // The accepted springs' energy at the present penalty.
-              const double spring_scale =
-                book ? pass.accepted_penalty / pass.penalty : 1.;
-              for (const unsigned int node : pass.nodes)
-                {
-                  I.traction[node] = Tensor<1, 3>();
-                  const double A   = I.area[node];
-                  const double g =
-                    A > 0. ? -(I.normal[node] * I.gap[node]) / A : 0.;
-                  const double accepted_spring =
-                    I.coulomb ?
-                      spring_scale * pass.accepted_spring_energy[node] :
-                      0.;
-                  if (book && pass.counted[node])
-                    I.trial_stiffness_energy +=
-                      (accepted_spring -
-                       (I.coulomb ? pass.accepted_spring_energy[node] : 0.)) +
-                      (A > 0. && g < 0. ?
-                         0.5 * (pass.penalty - pass.accepted_penalty) * A * g *
-                           g :
-                         0.);
-                  pass.shown_gap[node]      = g;
-                  pass.shown_pressure[node] = g < 0. ? -pass.penalty * g : 0.;
-                  if (I.coulomb)
-                    pass.trial_slip_distance[node] =
-                      pass.accepted_slip_distance[node];
-                  if (A > 0. && pass.counted[node])
-                    statistics.max_penetration =
-                      std::max(statistics.max_penetration, -g);
-                  if (!(A > 0.) || !(g < 0.))
-                    {
-                      // Open: a frictional node forgets its spring, whose
-                      // energy is dissipated.
-                      if (I.coulomb)
-                        {
-                          pass.trial_tangential[node]    = Tensor<1, 3>();
-                          pass.trial_spring_energy[node] = 0.;
-                          if (pass.counted[node])
-                            {
-                              dissipation += accepted_spring;
-                              if (I.trace.enabled)
-                                I.trace.dissipation[node] += accepted_spring;
-                            }
-                        }
-                      continue;
-                    }
-                  const Tensor<1, 3> &n = I.normal[node];
-                  const double        p = -pass.penalty * g;
-                  I.traction[node]      = -p * n;
-                  Tensor<1, 3> tangential;
-                  bool         slipping = false;
-                  if (I.coulomb)
-                    {
-                      Tensor<1, 3> old, increment;
-                      tangential =
-                        coulomb_return_mapping(pass.accepted_tangential[node],
-                                               n,
-                                               I.slip[node],
-                                               A,
-                                               p,
-                                               pass.penalty,
-                                               step,
-                                               def,
-                                               old,
-                                               increment,
-                                               slipping);
-                      if (slipping)
-                        pass.trial_slip_distance[node] += increment.norm();
-                      I.traction[node] += tangential;
-                      pass.trial_tangential[node] = tangential;
-                      const double spring =
-                        0.5 * A * (tangential * tangential) / pass.penalty;
-                      pass.trial_spring_energy[node] = spring;
-                      if (pass.counted[node])
-                        {
-                          // The work done on the spring over the step
-                          // (trapezoidal) less what it stores.
-                          const double node_dissipation =
-                            -0.5 * A * ((old + tangential) * increment) -
-                            (spring - accepted_spring);
-                          dissipation += node_dissipation;
-                          energy += spring;
-                          if (I.trace.enabled)
-                            {
-                              I.trace.dissipation[node] += node_dissipation;
-                              I.trace.slipping[node] = slipping;
-                            }
-                        }
-                    }
-                  if (pass.counted[node])
-                    {
-                      energy += 0.5 * pass.penalty * A * g * g;
-                      book_active(p, tangential.norm(), A);
-                      if (slipping)
-                        ++statistics.slipping_nodes;
-                    }
-                }
-            }
-
-          // The forces of this rank's segments: w D t on the slave side,
-          // -w M t on the master side, and where the weight w is below 1
-          // the springs' share of its gradient (weight_forces()).
-          for (const StoredSegment &s : pass.segments)
-            {
-              if (!I.owns(pass, s.slave))
-                continue;
-              const auto &sn = I.facet_nodes[pass.gap_facets[s.slave]];
-              const auto &mn = I.facet_nodes[s.master];
-              for (unsigned int a = 0; a < 4; ++a)
-                {
-                  if (I.traction[sn[a]].norm_square() == 0.)
-                    continue;
-                  // The segment's traction: its normal part follows the
-                  // master face's slope (segment_traction()).
-                  const double       p = tied ? 0. : pass.shown_pressure[sn[a]];
-                  const Tensor<1, 3> t =
-                    s.weight * segment_traction(I.traction[sn[a]],
-                                                p,
-                                                I.normal[sn[a]],
-                                                s.integrals.normal,
-                                                s.integrals.slope);
-                  for (unsigned int b = 0; b < 4; ++b)
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        const double on_slave = s.integrals.D[a][b] * t[d];
-                        I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
-                          on_slave;
-                        statistics.force[d] += on_slave;
-                        I.f_pair.local_element(I.node_dofs[mn[b]][d]) -=
-                          s.integrals.M[a][b] * t[d];
-                      }
-                }
-              if (tied || s.weight_gradient.norm_square() == 0.)
-                continue;
-              Tensor<1, 3> on_slave[4], on_master[4];
-              I.weight_forces(pass, s, on_slave, on_master);
-              for (unsigned int b = 0; b < 4; ++b)
-                for (unsigned int d = 0; d < 3; ++d)
-                  {
-                    I.f_pair.local_element(I.node_dofs[sn[b]][d]) +=
-                      on_slave[b][d];
-                    statistics.force[d] += on_slave[b][d];
-                    I.f_pair.local_element(I.node_dofs[mn[b]][d]) +=
-                      on_master[b][d];
-                  }
-            }
+            I.contact_tractions(pass, point.time, energies, statistics);
+          I.scatter_segment_forces(pass, statistics);
         }
       I.f_pair.compress_start(I.channel, VectorOperation::add);
       I.exchange = Implementation::Exchange::forces_sent;
       // The springs' energy less what the penalty updates put in: the work
       // done on them.
-      energy -= I.accepted_stiffness_energy + I.trial_stiffness_energy;
+      const double energy = energies.stored - (I.accepted_stiffness_energy +
+                                               I.trial_stiffness_energy);
       results.contact_energy += energy;
-      results.friction_dissipation += dissipation;
+      results.friction_dissipation += energies.dissipated;
       if (I.time_step > 0.)
         results.contact_time_step =
           std::min(results.contact_time_step, I.time_step);
       I.energy            = energy;
-      I.trial_dissipation = dissipation;
+      I.trial_dissipation = energies.dissipated;
       I.trial_time        = point.time;
       I.trial_pending     = true;
       I.timings.evaluation_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
     }
-
-
 
     const ContactPairTimings &
     MortarContactPair::timings() const
@@ -1332,7 +1371,7 @@ namespace rubberdyn
             I.refresh_shown_gaps(pass);
           I.shown_gaps_partial = false;
         }
-      VectorType            values(I.partitioner);
+      VectorType values(I.partitioner);
       for (const Implementation::Pass &pass : I.passes)
         for (const unsigned int node : pass.nodes)
           if (pass.counted[node])

@@ -344,6 +344,56 @@ namespace rubberdyn
       void
       compute_normals(const Pass &pass);
 
+      /** What an evaluation's passes add up (J): the springs' stored
+       * energy and the friction's dissipation over the trial step. */
+      struct EvaluationEnergies
+      {
+        double stored = 0., dissipated = 0.;
+      };
+
+      /**
+       * The first phase of an evaluation (compute_forces()): the ghosted
+       * surface displacements in, the current positions, the masses on
+       * the first call with masses, a pending penalty update, and the
+       * search if the motion since the last one asks for it.
+       */
+      void
+      prepare_evaluation(const model::EvaluationPoint &point);
+
+      /**
+       * The tied nodes' tractions of @p pass at the current positions:
+       * the penalty on the change of each node's weighted gap vector since
+       * the reference state (the stored reference integrals times the
+       * displacements), with their energy and the columns' sums.
+       */
+      void
+      tied_tractions(Pass                  &pass,
+                     EvaluationEnergies    &energies,
+                     ContactPairStatistics &statistics);
+
+      /**
+       * The contact nodes' tractions of @p pass at the current positions
+       * and @p time: integrates the segments (skipping the clearly open
+       * facets), then per node the normal penalty on the weighted gap and,
+       * for Coulomb pairs, the return mapping on the weighted slip, with
+       * the springs' energy, the friction's dissipation and the columns'
+       * sums.
+       */
+      void
+      contact_tractions(Pass                  &pass,
+                        const double           time,
+                        EvaluationEnergies    &energies,
+                        ContactPairStatistics &statistics);
+
+      /**
+       * The forces of this rank's segments of @p pass into f_pair: w D t
+       * on the slave side, -w M t on the master side, and where the weight
+       * w is below 1 the springs' share of its gradient (weight_forces()).
+       */
+      void
+      scatter_segment_forces(const Pass            &pass,
+                             ContactPairStatistics &statistics);
+
       /**
        * The unit normal at the @p k-th node of @p pass: the sum of its
        * slave facets' diagonal cross products, normalised, with the
@@ -562,6 +612,28 @@ namespace rubberdyn
       /** How many update_couplings() have marked new nodes. */
       unsigned int coupling_growths = 0;
 
+      /** By facet: its bounds as a master facet (master_bounds_of()), and
+       * the integrate() call they belong to. */
+      std::vector<MasterFacetBounds> master_bounds;
+      std::vector<unsigned long>     master_bounds_stamp;
+      /** Counts integrate()'s calls (from 1). */
+      unsigned long bounds_evaluation = 0;
+
+      /** Master facet @p m's bounds at the current positions, computed at
+       * the first request of this integrate() call. */
+      const MasterFacetBounds &
+      master_bounds_of(const unsigned int m)
+      {
+        if (master_bounds_stamp[m] != bounds_evaluation)
+          {
+            FacetCorners corners;
+            for (unsigned int k = 0; k < 4; ++k)
+              corners[k] = x[facet_nodes[m][k]];
+            master_bounds[m]       = master_facet_bounds(corners);
+            master_bounds_stamp[m] = bounds_evaluation;
+          }
+        return master_bounds[m];
+      }
       /** By node index: open (mark_open_nodes()). */
       std::vector<char> open_node;
 

@@ -396,18 +396,68 @@ namespace rubberdyn
 
 
 
+    MasterFacetBounds
+    master_facet_bounds(const FacetCornersOf<double> &master)
+    {
+      MasterFacetBounds bounds;
+      // The same expression as may_overlap()'s facing test.
+      bounds.diagonal_normal =
+        cross_product_3d(master[2] - master[0], master[3] - master[1]);
+      for (const Point<3> &x : master)
+        bounds.centre += 0.25 * x;
+      for (const Point<3> &x : master)
+        bounds.radius = std::max(bounds.radius, x.distance(bounds.centre));
+      return bounds;
+    }
+
+
+
     template <typename Number>
     bool
     MortarSlaveFacetOf<Number>::may_overlap(
       const FacetCornersOf<Number> &master,
-      PlanePoint<Number> (&master_corner)[4]) const
+      PlanePoint<Number> (&master_corner)[4],
+      const MasterFacetBounds *bounds) const
     {
       if (degenerate)
         return false;
-      const Tensor<1, 3, Number> master_normal =
-        cross_product_3d(master[2] - master[0], master[3] - master[1]);
-      if (!(value_of(master_normal * normal) < 0.))
-        return false;
+      if (bounds != nullptr)
+        {
+          double facing = 0.;
+          for (unsigned int d = 0; d < 3; ++d)
+            facing += bounds->diagonal_normal[d] * value_of(normal[d]);
+          if (!(facing < 0.))
+            return false;
+          // Each corner's coordinate along an in-plane axis lies within
+          // the radius of the centre's: apart from the box (below) by more
+          // than the margin that the box test takes for the widest master
+          // facet in the ball, the box test rejects it too. (The radius
+          // grown by 1e-10 of the lengths involved covers the round-off
+          // of the two ways of computing the coordinates.)
+          Tensor<1, 3> r;
+          for (unsigned int d = 0; d < 3; ++d)
+            r[d] = bounds->centre[d] - value_of(centre[d]);
+          const double radius =
+            bounds->radius + 1e-10 * (bounds->radius + r.norm());
+          const Tensor<1, 3, Number> *const axis[2] = {&e1, &e2};
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              double along = 0.;
+              for (unsigned int k = 0; k < 3; ++k)
+                along += r[k] * value_of((*axis[d])[k]);
+              const double margin = 1e-8 * (upper[d] - lower[d] + 2. * radius);
+              if (along + radius < lower[d] - margin ||
+                  along - radius > upper[d] + margin)
+                return false;
+            }
+        }
+      else
+        {
+          const Tensor<1, 3, Number> master_normal =
+            cross_product_3d(master[2] - master[0], master[3] - master[1]);
+          if (!(value_of(master_normal * normal) < 0.))
+            return false;
+        }
 
       for (unsigned int k = 0; k < 4; ++k)
         {
@@ -448,10 +498,11 @@ namespace rubberdyn
     bool
     MortarSlaveFacetOf<Number>::clearly_open(
       const FacetCornersOf<Number> &master,
-      const double                  clearance) const
+      const double                  clearance,
+      const MasterFacetBounds      *bounds) const
     {
       PlanePoint<Number> master_corner[4];
-      if (!may_overlap(master, master_corner))
+      if (!may_overlap(master, master_corner, bounds))
         return true;
       for (const Point<3, Number> &x : master)
         if (!(value_of((x - centre) * normal) > top + clearance))
@@ -465,10 +516,11 @@ namespace rubberdyn
     bool
     MortarSlaveFacetOf<Number>::integrate(const FacetCornersOf<Number> &master,
                                           MortarSegmentOf<Number>      &segment,
-                                          const unsigned int row) const
+                                          const unsigned int            row,
+                                          const MasterFacetBounds *bounds) const
     {
       PlanePoint<Number> master_corner[4];
-      if (!may_overlap(master, master_corner))
+      if (!may_overlap(master, master_corner, bounds))
         return false;
 
       // The slave quadrilateral clipped by each edge of the master one,

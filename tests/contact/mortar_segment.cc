@@ -21,6 +21,13 @@
 //     whatever the map).
 //  5. A master that faces the same way as the slave, and one beside it
 //     (no overlap): no segment.
+//  6. MasterFacetBounds (the explicit pair's first tests): against 20 000
+//     pseudo-random master facets about a warped slave facet (tilted,
+//     twisted, of all sizes and orientations, many overlapping it, many
+//     just apart), MortarSlaveFacet::integrate() and clearly_open() with
+//     the bounds decide and integrate exactly as without them (the bounds
+//     may only reject earlier what the box test rejects; every bit of D,
+//     M and the slope is compared). Both outcomes are exercised.
 // Bound 1e-13 (the rule integrates these quartic products exactly; the
 // inverse maps converge to 1e-14 of the facet's size).
 #include <rubberdyn/contact/mortar_segment.h>
@@ -172,6 +179,78 @@ main()
                                         s);
     out() << "5. same way: " << same_way << ", beside: " << beside << std::endl;
     check(!same_way && !beside, "no segment");
+  }
+
+  // 6. The bounds decide as the tests without them.
+  {
+    // A linear congruential generator (Knuth's MMIX constants): the same
+    // facets on every machine.
+    unsigned long long state   = 12345;
+    const auto         uniform = [&state](const double a, const double b) {
+      state = 6364136223846793005ULL * state + 1442695040888963407ULL;
+      return a + (b - a) * double(state >> 11) / double(1ULL << 53);
+    };
+    const contact::FacetCorners     warped = {{Point<3>(0., 0., 0.),
+                                               Point<3>(1.1, 0.05, 0.02),
+                                               Point<3>(1.0, 0.9, -0.03),
+                                               Point<3>(-0.05, 1.0, 0.01)}};
+    const contact::MortarSlaveFacet facet(warped);
+    unsigned int overlapping = 0, apart = 0, differing = 0, open = 0;
+    for (unsigned int trial = 0; trial < 20000; ++trial)
+      {
+        // A quadrilateral about a random centre, corners at random radii
+        // and angles in order, clockwise seen from +z (facing down), its
+        // plane tilted and its corners' heights scattered.
+        const double   size = uniform(0.05, 2.);
+        const Point<3> centre(uniform(-1.5, 2.5),
+                              uniform(-1.5, 2.5),
+                              uniform(-0.3, 0.3));
+        const double   turn   = uniform(0., 6.283185307179586);
+        const double   tilt_x = uniform(-0.5, 0.5), tilt_y = uniform(-0.5, 0.5);
+        contact::FacetCorners master;
+        for (unsigned int k = 0; k < 4; ++k)
+          {
+            const double angle =
+              turn - k * 1.5707963267948966 + uniform(-0.4, 0.4);
+            const double r  = size * uniform(0.4, 0.8);
+            const double dx = r * std::cos(angle), dy = r * std::sin(angle);
+            master[k] =
+              centre +
+              Tensor<1, 3>(
+                {dx, dy, tilt_x * dx + tilt_y * dy + uniform(-0.02, 0.02)});
+          }
+        // One in eight faces the slave's way.
+        if (trial % 8 == 7)
+          std::swap(master[1], master[3]);
+        const contact::MasterFacetBounds bounds =
+          contact::master_facet_bounds(master);
+        contact::MortarSegment without, with;
+        const bool             found = facet.integrate(master, without);
+        const bool             found_with_bounds =
+          facet.integrate(master, with, 4, &bounds);
+        overlapping += found;
+        bool same = found == found_with_bounds;
+        if (found && found_with_bounds)
+          {
+            for (unsigned int a = 0; a < 4; ++a)
+              for (unsigned int b = 0; b < 4; ++b)
+                same = same && without.D[a][b] == with.D[a][b] &&
+                       without.M[a][b] == with.M[a][b];
+            for (unsigned int d = 0; d < 3; ++d)
+              same = same && without.slope[d] == with.slope[d];
+            same = same && without.area == with.area;
+          }
+        const bool is_open = facet.clearly_open(master, 1e-3);
+        same = same && is_open == facet.clearly_open(master, 1e-3, &bounds);
+        open += is_open;
+        differing += !same;
+        apart += !found;
+      }
+    out() << "6. bounds: " << overlapping << " of 20000 overlap, " << open
+          << " clearly open, " << differing << " decided differently"
+          << std::endl;
+    check(differing == 0, "the bounds decide and integrate as without");
+    check(overlapping > 2000 && apart > 2000, "both outcomes are exercised");
   }
   return 0;
 }

@@ -177,6 +177,29 @@ namespace rubberdyn
     } // namespace mortar_segment_internal
 
     /**
+     * What every slave facet's overlap test asks of a master facet at the
+     * current positions, computed once per evaluation for all its slave
+     * facets (MortarContactPair) instead of once per candidate pair: the
+     * cross product of its diagonals (the facing test) and a ball about
+     * its corners' mean that holds them (a first in-plane test without
+     * projecting the corners). Tests with it decide as those without, to
+     * the last bit: it only rejects earlier.
+     */
+    struct MasterFacetBounds
+    {
+      /** The diagonals' cross product (not normalised). */
+      Tensor<1, 3> diagonal_normal;
+      /** The corners' mean (mm). */
+      Point<3> centre;
+      /** The corners' largest distance from it (mm). */
+      double radius = 0.;
+    };
+
+    /** The bounds of @p master at its corners' positions. */
+    MasterFacetBounds
+    master_facet_bounds(const FacetCornersOf<double> &master);
+
+    /**
      * A slave facet prepared for integrate_mortar_segment() against each
      * of its candidate master facets: its auxiliary plane, its projected
      * corners and bilinear map, computed once instead of once per
@@ -189,11 +212,13 @@ namespace rubberdyn
     public:
       explicit MortarSlaveFacetOf(const FacetCornersOf<Number> &slave);
 
-      /** integrate_mortar_segment(slave, @p master, @p segment, @p row). */
+      /** integrate_mortar_segment(slave, @p master, @p segment, @p row);
+       * @p bounds, if given, are @p master's (values only). */
       bool
       integrate(const FacetCornersOf<Number> &master,
                 MortarSegmentOf<Number>      &segment,
-                const unsigned int            row = 4) const;
+                const unsigned int            row    = 4,
+                const MasterFacetBounds      *bounds = nullptr) const;
 
       /**
        * Whether @p master adds nothing but open gap to this facet's nodes:
@@ -208,7 +233,8 @@ namespace rubberdyn
        */
       bool
       clearly_open(const FacetCornersOf<Number> &master,
-                   const double                  clearance) const;
+                   const double                  clearance,
+                   const MasterFacetBounds      *bounds = nullptr) const;
 
       /**
        * The unit normal of the auxiliary plane (the diagonals' cross
@@ -224,12 +250,16 @@ namespace rubberdyn
       /**
        * The cheap tests of integrate(): whether @p master faces this facet
        * and its corners in the plane (@p master_corner, written) have a
-       * bounding box that meets this facet's.
+       * bounding box that meets this facet's. With @p bounds (@p master's)
+       * the facing test takes their normal, and a master facet whose ball
+       * lies apart from the box in the plane is rejected before its
+       * corners are projected.
        */
       bool
       may_overlap(
-        const FacetCornersOf<Number>                &master,
-        mortar_segment_internal::PlanePoint<Number> (&master_corner)[4]) const;
+        const FacetCornersOf<Number> &master,
+        mortar_segment_internal::PlanePoint<Number> (&master_corner)[4],
+        const MasterFacetBounds *bounds = nullptr) const;
 
       /** True for a facet without area (no segment then). */
       bool degenerate;
