@@ -21,8 +21,6 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
-#include "rigid_part_unknowns.h"
-
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
@@ -32,6 +30,8 @@
 #include <limits>
 #include <ostream>
 #include <sstream>
+
+#include "rigid_part_unknowns.h"
 
 namespace rubberdyn
 {
@@ -238,7 +238,7 @@ namespace rubberdyn
       /** The prescribed increments on coupled_partitioner (predictor). */
       VectorType coupled_increment;
       /** The loads' couplings_version() when the pattern was built. */
-      std::vector<unsigned int> pattern_versions;
+      std::vector<unsigned int>      pattern_versions;
       TrilinosWrappers::SparseMatrix matrix;
       TrilinosWrappers::MPI::Vector  rhs, solution;
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
@@ -550,10 +550,9 @@ namespace rubberdyn
 
 
     void
-    QuasiStaticSolver::Implementation::add_body_motion_load(
-      const VectorType &u,
-      const double      t_old,
-      const double      t_new)
+    QuasiStaticSolver::Implementation::add_body_motion_load(const VectorType &u,
+                                                            const double t_old,
+                                                            const double t_new)
     {
       place_bodies(t_old);
       std::vector<model::RigidBody> moved = bodies;
@@ -590,7 +589,8 @@ namespace rubberdyn
           const double          ramp = std::min(t / load.lock_time, 1.);
           section_unknown[s] =
             load.force_control && t <= load.lock_time * (1. + 1e-12);
-          section_target[s] = section_unknown[s] ? load.target_force * ramp : 0.;
+          section_target[s] =
+            section_unknown[s] ? load.target_force * ramp : 0.;
           // A locked force-controlled section keeps its shortening.
           prescribed[s] = section_unknown[s] ? 0. :
                           load.force_control ? shortening[s] :
@@ -682,11 +682,10 @@ namespace rubberdyn
           parts->set_linearisation_point(u, poses);
           r.part_residual = parts->project(r.force);
           for (unsigned int j = 0; j < r.part_residual.size(); ++j)
-            sums[0] += std::pow(r.part_residual[j] /
-                                  (parts->is_rotation(j) ?
-                                     parts->length_scale(j) :
-                                     1.),
-                                2);
+            sums[0] +=
+              std::pow(r.part_residual[j] /
+                         (parts->is_rotation(j) ? parts->length_scale(j) : 1.),
+                       2);
         }
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
@@ -774,8 +773,8 @@ namespace rubberdyn
               coupled_partitioner->local_to_global(i);
             step_constraints.add_line(global);
             if (predictor)
-              step_constraints.set_inhomogeneity(
-                global, coupled_increment.local_element(i));
+              step_constraints
+                .set_inhomogeneity(global, coupled_increment.local_element(i));
           }
       step_constraints.close();
 
@@ -803,9 +802,9 @@ namespace rubberdyn
         });
       // The loads' tangents (the pressures' load stiffness, contact),
       // block by block.
-      FullMatrix<double>                   block_matrix;
-      Vector<double>                       block_rhs;
-      std::vector<unsigned int>            block_local;
+      FullMatrix<double>        block_matrix;
+      Vector<double>            block_rhs;
+      std::vector<unsigned int> block_local;
       for (const model::ForceContribution *load : loads)
         load->add_tangents(
           point,
@@ -847,8 +846,11 @@ namespace rubberdyn
                               "rigid parts cannot border that block yet "
                               "(run on one rank)"));
                 if (!beyond)
-                  parts->add_block(
-                    block_local.data(), n, K.data(), part_column, part_row);
+                  parts->add_block(block_local.data(),
+                                   n,
+                                   K.data(),
+                                   part_column,
+                                   part_row);
               }
             step_constraints.distribute_local_to_global(block_matrix,
                                                         block_rhs,
@@ -877,7 +879,7 @@ namespace rubberdyn
       // diagonal of the matrix's mean scale (its solution is overwritten).
       // (Models without such rows skip the scale and the second compress.)
       {
-        const unsigned int                   n_owned = partitioner->locally_owned_size();
+        const unsigned int n_owned = partitioner->locally_owned_size();
         std::vector<types::global_dof_index> empty_rows;
         for (unsigned int i = 0; i < n_owned; ++i)
           if (constrained[i] &&
@@ -893,8 +895,8 @@ namespace rubberdyn
                     matrix.diag_element(partitioner->local_to_global(i)));
                   count += 1.;
                 }
-            sum   = Utilities::MPI::sum(sum, comm);
-            count = Utilities::MPI::sum(count, comm);
+            sum                = Utilities::MPI::sum(sum, comm);
+            count              = Utilities::MPI::sum(count, comm);
             const double scale = count > 0. && sum > 0. ? sum / count : 1.;
             for (const types::global_dof_index row : empty_rows)
               matrix.set(row, row, scale);
@@ -908,8 +910,8 @@ namespace rubberdyn
         {
           for (unsigned int s = 0; s < sections.size(); ++s)
             {
-              section_column[s] = 0.;
-              section_row[s]    = 0.;
+              section_column[s]   = 0.;
+              section_row[s]      = 0.;
               section_diagonal[s] = 0.;
               section_rhs[s]      = -r.section_residual[s];
             }
@@ -1000,7 +1002,8 @@ namespace rubberdyn
       if (use_direct)
         {
           TrilinosWrappers::SolverDirect::AdditionalData data(
-            false, settings.direct_solver);
+            false,
+            settings.direct_solver);
           direct =
             std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
                                                              data);
@@ -1068,7 +1071,7 @@ namespace rubberdyn
             return cg_iterations + gmres();
           }
       };
-      unsigned int n_iter = linear_solve(solution, rhs);
+      unsigned int       n_iter  = linear_solve(solution, rhs);
       const unsigned int n_owned = partitioner->locally_owned_size();
       // a: the correction without the sections' (prescribed increments on
       // the constrained dofs).
@@ -1087,8 +1090,7 @@ namespace rubberdyn
       if (m == 0)
         return n_iter;
       const auto column_of = [&](const unsigned int k) -> const VectorType & {
-        return k < n_sections ? section_column[k] :
-                                part_column[k - n_sections];
+        return k < n_sections ? section_column[k] : part_column[k - n_sections];
       };
       const auto row_of = [&](const unsigned int k) -> const VectorType & {
         return k < n_sections ? section_row[k] : part_row[k - n_sections];
@@ -1155,9 +1157,9 @@ namespace rubberdyn
           for (unsigned int i = 0; i < n_unknown; ++i)
             {
               const unsigned int k = unknown[i];
-              right(i) = (k < n_sections ? section_rhs[k] :
-                                           part_rhs[k - n_sections]) -
-                         dot(row_of(k), du);
+              right(i) =
+                (k < n_sections ? section_rhs[k] : part_rhs[k - n_sections]) -
+                dot(row_of(k), du);
               for (unsigned int l = 0; l < m; ++l)
                 {
                   const double entry = border(k, l) - dot(row_of(k), b[l]);
@@ -1316,8 +1318,7 @@ namespace rubberdyn
       Implementation::Residual r;
       std::vector<double>      unused;
       impl->set_section_targets(current_time, shortening, unused);
-      impl->evaluate(
-        u, shortening, part_poses, current_time, current_time, r);
+      impl->evaluate(u, shortening, part_poses, current_time, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +
@@ -1354,6 +1355,417 @@ namespace rubberdyn
 
 
 
+    /**
+     * One load step of QuasiStaticSolver::run(), from the last converged
+     * state to the step's end: the Newton iterations, each a correction
+     * (assembly and solve) and a backtracking line search, the
+     * convergence test with the last state's penalty update, and the way
+     * back to the step's start for a cut-back. It holds run()'s work
+     * vectors, allocated once per run.
+     */
+    class QuasiStaticSolver::LoadStep
+    {
+    public:
+      LoadStep(QuasiStaticSolver &solver, std::ostream &log)
+        : solver(solver)
+        , I(*solver.impl)
+        , settings(I.settings)
+        , root(Utilities::MPI::this_mpi_process(I.comm) == 0)
+        , log(log)
+        , u_start(solver.u)
+        , u_trial(solver.u)
+        , du(solver.u)
+        , increment(solver.u)
+        , wall_start(std::chrono::steady_clock::now())
+      {}
+
+      /**
+       * Start the step to @p t_new, the run's last if @p last_step: the
+       * prescribed increments of the constrained dofs and sections, the
+       * step's start kept for a cut-back, the penalty of the start's
+       * geometry and the residual there.
+       */
+      void
+      begin(const double t_new, const bool last_step);
+
+      /**
+       * The Newton iterations of the step begun last: whether they
+       * converged, and if not why in @p reason.
+       */
+      bool
+      iterate(std::string &reason);
+
+      /** Back to the step's start (a cut-back). */
+      void
+      restore_start();
+
+      /** The iterations of the last iterate(), with the one that stopped
+       * it; the linear solver's iterations in them. */
+      unsigned int iterations = 0, linear_iterations = 0;
+
+    private:
+      /**
+       * The correction of one iteration (the predictor's first) into du,
+       * d_delta and d_part: assembly and solve. Returns false, with the
+       * linear solver's message in @p reason, if that failed.
+       */
+      bool
+      solve_correction(const bool    predictor,
+                       unsigned int &n_linear,
+                       std::string  &reason);
+
+      /**
+       * Backtracking line search: halve the correction while an element
+       * fails or the residual norm does not decrease (Armijo, factor 1e-4).
+       * The predictor's prescribed part is always taken whole (it is the
+       * load), and the predictor itself is only checked for failures: its
+       * starting residual is the last step's equilibrium. Leaves the
+       * accepted candidate in u_trial, delta_trial, poses_trial and
+       * r_trial, its step length in @p alpha; false if none was.
+       */
+      bool
+      line_search(const bool predictor, double &alpha);
+
+      /** Make the line search's candidate the iterate. */
+      void
+      take_trial();
+
+      /**
+       * The run's last state (an explicit run may start from it),
+       * converged with the penalty held: take the penalty of this state,
+       * and whether that changed nothing of note: the residual with it as
+       * small as before (within 10 times, or 1e-3 of the tolerance, of the
+       * converged @p ratio), so that the state is an equilibrium with its
+       * own penalty as closely as Newton converges (the explicit run that
+       * starts from it sees no jolt). From the third update on, Newton's
+       * tolerance is enough: the penalty's own round-off can hold the
+       * residual there (8e-11 of the reactions with the stiff rigid
+       * cylinder of benchmarks/ironing.sh's longer slab, which was cut
+       * back three times for it).
+       */
+      bool
+      penalty_of_last_state_holds(const double ratio);
+
+      /** Seconds since the run started (the log). */
+      double
+      wall() const
+      {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             wall_start)
+          .count();
+      }
+
+      QuasiStaticSolver             &solver;
+      Implementation                &I;
+      const parameters::QuasiStatic &settings;
+      const bool                     root;
+      std::ostream                  &log;
+
+      /** The step's end time, whether it is the run's last, whether the
+       * contributions follow the geometry and the bodies move in it. */
+      double t_new            = 0.;
+      bool   last_step        = false;
+      bool   follows_geometry = false;
+      bool   surfaces_move    = false;
+      /** Penalty updates of the last state in this step. */
+      unsigned int penalty_updates = 0;
+
+      /** The last converged state (for a cut-back), the line search's
+       * candidate, the correction, the prescribed increments. */
+      VectorType               u_start, u_trial, du, increment;
+      Implementation::Residual r, r_trial;
+      /** The same for the sections' shortenings. */
+      std::vector<double> delta_start, delta_trial, d_delta, delta_increment,
+        prescribed;
+      /** And for the rigid parts in equilibrium: poses and increments. */
+      std::vector<model::RigidBody> poses_start, poses_trial;
+      std::vector<double>           d_part;
+
+      const std::chrono::steady_clock::time_point wall_start;
+    };
+
+
+
+    void
+    QuasiStaticSolver::LoadStep::begin(const double t_new_,
+                                       const bool   last_step_)
+    {
+      t_new                         = t_new_;
+      last_step                     = last_step_;
+      VectorType                 &u = solver.u;
+      const KinematicConstraints &c = I.constraints;
+      // The prescribed increments: a displacement group's g(t_new) - u_n,
+      // zero for the velocity groups (fixed, symmetry).
+      increment = 0.;
+      for (const KinematicConstraints::Entry &entry : c.entries())
+        if (c.kind(entry.group) == KinematicConstraints::Kind::displacement)
+          increment.local_element(entry.dof) =
+            c.prescribed_function_value(entry, t_new) -
+            u.local_element(entry.dof);
+
+      // (The ghosts too: a ghost dof's inhomogeneity enters this rank's
+      // element matrices in assemble().)
+      increment.update_ghost_values();
+      u_start = u;
+      u.update_ghost_values();
+      // The sections: targets at t_new, prescribed increments.
+      std::vector<double> &shortening = solver.shortening;
+      delta_start                     = shortening;
+      poses_start                     = solver.part_poses;
+      I.set_section_targets(t_new, shortening, prescribed);
+      delta_increment.assign(shortening.size(), 0.);
+      for (unsigned int k = 0; k < shortening.size(); ++k)
+        if (!I.section_unknown[k])
+          delta_increment[k] = prescribed[k] - shortening[k];
+      // The penalty stiffness of the converged state (again after a
+      // cut-back); then of the predictor's state, held during the
+      // iterations; in the last step also of the converged state.
+      follows_geometry = I.follow_geometry();
+      I.evaluate(u, shortening, solver.part_poses, t_new, t_new, r);
+      surfaces_move = I.bodies_move_between(solver.current_time, t_new);
+    }
+
+
+
+    bool
+    QuasiStaticSolver::LoadStep::solve_correction(const bool    predictor,
+                                                  unsigned int &n_linear,
+                                                  std::string  &reason)
+    {
+      const VectorType                    &u     = solver.u;
+      const std::vector<model::RigidBody> &poses = solver.part_poses;
+      try
+        {
+          if (predictor && surfaces_move)
+            {
+              // Linearised about the converged state, with the surfaces'
+              // motion as a load: a node sticking to a surface follows it,
+              // as a node on a moving constraint does (the residual at the
+              // surfaces' new places would have it slip at once).
+              Implementation::Residual r_start;
+              I.evaluate(u,
+                         solver.shortening,
+                         poses,
+                         t_new,
+                         solver.current_time,
+                         r_start);
+              I.assemble(u,
+                         t_new,
+                         solver.current_time,
+                         poses,
+                         r_start,
+                         increment,
+                         predictor);
+              I.add_body_motion_load(u, solver.current_time, t_new);
+            }
+          else
+            I.assemble(u, t_new, t_new, poses, r, increment, predictor);
+          n_linear = I.solve(du,
+                             d_delta,
+                             d_part,
+                             poses,
+                             increment,
+                             delta_increment,
+                             predictor);
+        }
+      catch (const QuasiStaticFailure &)
+        {
+          // (A singular rigid part: no cut-back can help.)
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          // (deal.II's NoConvergence has an empty what().)
+          const std::string what = e.what();
+          reason                 = "the linear solver failed" +
+                   (what.empty() ? std::string(" to converge") : ": " + what);
+          return false;
+        }
+      return true;
+    }
+
+
+
+    bool
+    QuasiStaticSolver::LoadStep::line_search(const bool predictor,
+                                             double    &alpha)
+    {
+      const VectorType          &u          = solver.u;
+      const std::vector<double> &shortening = solver.shortening;
+      alpha                                 = 1.;
+      for (unsigned int trial = 0; trial < 7; ++trial)
+        {
+          for (unsigned int i = 0; i < I.partitioner->locally_owned_size(); ++i)
+            u_trial.local_element(i) =
+              u.local_element(i) +
+              (I.constrained[i] ? 1. : alpha) * du.local_element(i);
+          // The rigid parts turn by the finite rotation, and their nodes
+          // are placed on them exactly.
+          poses_trial = solver.part_poses;
+          if (I.parts)
+            {
+              I.parts->advance(poses_trial, d_part, alpha);
+              I.parts->place_nodes(poses_trial, u_trial);
+            }
+          u_trial.update_ghost_values();
+          // The predictor takes most of the step's motion: the penalty of
+          // its geometry is close to the converged one's, and is held from
+          // there on.
+          if (predictor && follows_geometry)
+            I.follow_geometry();
+          delta_trial = shortening;
+          for (unsigned int k = 0; k < shortening.size(); ++k)
+            delta_trial[k] += (I.section_unknown[k] ? alpha : 1.) * d_delta[k];
+          I.evaluate(u_trial, delta_trial, poses_trial, t_new, t_new, r_trial);
+          if (!r_trial.failed &&
+              (predictor || !settings.line_search || trial == 6 ||
+               r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
+            return true;
+          if (!settings.line_search)
+            return false;
+          alpha *= 0.5;
+        }
+      return false;
+    }
+
+
+
+    void
+    QuasiStaticSolver::LoadStep::take_trial()
+    {
+      solver.u.swap(u_trial);
+      std::swap(r, r_trial);
+      solver.shortening.swap(delta_trial);
+      solver.part_poses.swap(poses_trial);
+    }
+
+
+
+    bool
+    QuasiStaticSolver::LoadStep::penalty_of_last_state_holds(const double ratio)
+    {
+      I.follow_geometry();
+      ++penalty_updates;
+      I.evaluate(solver.u,
+                 solver.shortening,
+                 solver.part_poses,
+                 t_new,
+                 t_new,
+                 r);
+      const double scale_now =
+        std::max({r.reaction_norm, r.load_norm, settings.residual_floor});
+      const double ratio_now = r.free_norm / scale_now;
+      const bool   holds =
+        !r.failed &&
+        (r.free_norm <= settings.residual_floor ||
+         ratio_now <=
+           std::max(10. * ratio, 1e-3 * settings.residual_tolerance) ||
+         (penalty_updates >= 3 && ratio_now <= settings.residual_tolerance));
+      if (root && !holds)
+        log << "    penalty stiffness of this state: residual "
+            << std::scientific << std::setprecision(3) << r.free_norm
+            << " kN, relative " << ratio_now << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+      return holds;
+    }
+
+
+
+    bool
+    QuasiStaticSolver::LoadStep::iterate(std::string &reason)
+    {
+      const parameters::QuasiStatic &s            = settings;
+      double                         first_energy = 0.;
+      unsigned int                   growth       = 0;
+      double previous_norm = std::numeric_limits<double>::max();
+      penalty_updates      = 0;
+      linear_iterations    = 0;
+      for (iterations = 0; iterations < s.max_iterations; ++iterations)
+        {
+          const bool   predictor = (iterations == 0);
+          unsigned int n_linear  = 0;
+          if (!solve_correction(predictor, n_linear, reason))
+            return false;
+          linear_iterations += n_linear;
+          const double energy_increment =
+            I.energy_increment(du, d_delta, d_part);
+          if (predictor)
+            first_energy = energy_increment;
+
+          double alpha = 1.;
+          if (!line_search(predictor, alpha))
+            {
+              reason = r_trial.failure;
+              break;
+            }
+          take_trial();
+
+          const double scale =
+            std::max({r.reaction_norm, r.load_norm, s.residual_floor});
+          const double ratio = r.free_norm / scale;
+          // (Collective: on every rank, not inside the log's if.)
+          const double update = du.linfty_norm();
+          if (root)
+            log << "    iteration " << iterations + 1 << ": residual "
+                << std::scientific << std::setprecision(3) << r.free_norm
+                << " kN, relative " << ratio << ", update " << update
+                << " mm, energy " << energy_increment
+                << " J, linear iterations " << n_linear
+                << (alpha < 1. ? ", line search " + short_number(alpha) :
+                                 std::string())
+                << ", " << std::fixed << std::setprecision(2) << wall() << " s"
+                << std::defaultfloat << std::setprecision(6) << std::endl;
+          bool residual_ok =
+            r.free_norm <= s.residual_floor || ratio <= s.residual_tolerance;
+          // (In a step in which nothing changes, e.g. a held load with
+          // friction, even the first iteration's energy is round-off: an
+          // increment at the round-off of the strain energy is converged
+          // as well.)
+          const bool energy_ok =
+            r.free_norm <= s.residual_floor ||
+            energy_increment <= s.energy_tolerance * first_energy ||
+            energy_increment <= 1e-15 * std::abs(r.energy);
+          if (!predictor && residual_ok && energy_ok && follows_geometry &&
+              last_step)
+            residual_ok = penalty_of_last_state_holds(ratio);
+          if (!predictor && residual_ok && energy_ok)
+            {
+              ++iterations;
+              return true;
+            }
+          // Divergence: the residual grew in two iterations in a row, from
+          // the third on.
+          if (!predictor && r.free_norm > previous_norm)
+            ++growth;
+          else
+            growth = 0;
+          if (growth >= 2 && iterations >= 2)
+            {
+              reason = "the residual grows";
+              break;
+            }
+          previous_norm =
+            predictor ? std::numeric_limits<double>::max() : r.free_norm;
+        }
+      if (reason.empty())
+        reason = "no convergence in " + std::to_string(s.max_iterations) +
+                 " iterations";
+      return false;
+    }
+
+
+
+    void
+    QuasiStaticSolver::LoadStep::restore_start()
+    {
+      solver.u = u_start;
+      solver.u.update_ghost_values();
+      solver.shortening = delta_start;
+      solver.part_poses = poses_start;
+    }
+
+
+
     void
     QuasiStaticSolver::run(const double                 end_time,
                            std::ostream                &log,
@@ -1361,27 +1773,10 @@ namespace rubberdyn
     {
       Implementation                &I = *impl;
       const parameters::QuasiStatic &s = I.settings;
-      const KinematicConstraints    &c = I.constraints;
-      const bool root       = Utilities::MPI::this_mpi_process(I.comm) == 0;
-      const auto wall_start = std::chrono::steady_clock::now();
-      const auto wall       = [&]() {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             wall_start)
-          .count();
-      };
-
-      // u is the iterate; u_start the last converged state (for a
-      // cut-back); u_trial the line search's candidate.
-      VectorType               u_start(u), u_trial(u), du(u), increment(u);
-      Implementation::Residual r, r_trial;
-      // The same for the sections' shortenings.
-      std::vector<double> delta_start, delta_trial, d_delta, delta_increment,
-        prescribed;
-      // And for the rigid parts in equilibrium: poses and increments.
-      std::vector<model::RigidBody> poses_start, poses_trial;
-      std::vector<double>           d_part;
-      double                   step = std::min(s.initial_step, s.maximum_step);
-      unsigned int             cutbacks = 0, cutback_iterations = 0;
+      const bool   root = Utilities::MPI::this_mpi_process(I.comm) == 0;
+      LoadStep     load_step(*this, log);
+      double       step     = std::min(s.initial_step, s.maximum_step);
+      unsigned int cutbacks = 0, cutback_iterations = 0;
       while (current_time < end_time * (1. - 1e-12))
         {
           // Never step over a lock time: the section's target is reached
@@ -1399,258 +1794,15 @@ namespace rubberdyn
             log << "  Step to t = " << short_number(t_new, 6) << " (dt "
                 << short_number(step) << ")" << std::endl;
 
-          // The prescribed increments: a displacement group's g(t_new) -
-          // u_n, zero for the velocity groups (fixed, symmetry).
-          increment = 0.;
-          for (const KinematicConstraints::Entry &entry : c.entries())
-            if (c.kind(entry.group) == KinematicConstraints::Kind::displacement)
-              increment.local_element(entry.dof) =
-                c.prescribed_function_value(entry, t_new) -
-                u.local_element(entry.dof);
-
-          // (The ghosts too: a ghost dof's inhomogeneity enters this
-          // rank's element matrices in assemble().)
-          increment.update_ghost_values();
-          u_start = u;
-          u.update_ghost_values();
-          // The sections: targets at t_new, prescribed increments.
-          delta_start = shortening;
-          poses_start = part_poses;
-          I.set_section_targets(t_new, shortening, prescribed);
-          delta_increment.assign(shortening.size(), 0.);
-          for (unsigned int s = 0; s < shortening.size(); ++s)
-            if (!I.section_unknown[s])
-              delta_increment[s] = prescribed[s] - shortening[s];
-          // The penalty stiffness of the converged state (again after a
-          // cut-back); then of the predictor's state, held during the
-          // iterations; in the last step also of the converged state.
-          const bool follows_geometry = I.follow_geometry();
-          const bool last_step        = t_new >= end_time * (1. - 1e-12);
-          I.evaluate(u, shortening, part_poses, t_new, t_new, r);
-          const bool surfaces_move =
-            I.bodies_move_between(current_time, t_new);
-          std::string  reason;
-          bool         converged    = false;
-          double       first_energy = 0.;
-          unsigned int linear_total = 0, iteration = 0, growth = 0;
-          unsigned int penalty_updates = 0;
-          double       previous_norm = std::numeric_limits<double>::max();
-          for (; iteration < s.max_iterations; ++iteration)
-            {
-              const bool   predictor = (iteration == 0);
-              unsigned int n_linear  = 0;
-              try
-                {
-                  if (predictor && surfaces_move)
-                    {
-                      // Linearised about the converged state, with the
-                      // surfaces' motion as a load: a node sticking to a
-                      // surface follows it, as a node on a moving
-                      // constraint does (the residual at the surfaces' new
-                      // places would have it slip at once).
-                      Implementation::Residual r_start;
-                      I.evaluate(u,
-                                 shortening,
-                                 part_poses,
-                                 t_new,
-                                 current_time,
-                                 r_start);
-                      I.assemble(u,
-                                 t_new,
-                                 current_time,
-                                 part_poses,
-                                 r_start,
-                                 increment,
-                                 predictor);
-                      I.add_body_motion_load(u, current_time, t_new);
-                    }
-                  else
-                    I.assemble(
-                      u, t_new, t_new, part_poses, r, increment, predictor);
-                  n_linear = I.solve(du,
-                                     d_delta,
-                                     d_part,
-                                     part_poses,
-                                     increment,
-                                     delta_increment,
-                                     predictor);
-                }
-              catch (const QuasiStaticFailure &)
-                {
-                  // (A singular rigid part: no cut-back can help.)
-                  throw;
-                }
-              catch (const std::exception &e)
-                {
-                  // (deal.II's NoConvergence has an empty what().)
-                  const std::string what = e.what();
-                  reason =
-                    "the linear solver failed" +
-                    (what.empty() ? std::string(" to converge") : ": " + what);
-                  break;
-                }
-              linear_total += n_linear;
-              const double energy_increment =
-                I.energy_increment(du, d_delta, d_part);
-              if (predictor)
-                first_energy = energy_increment;
-
-              // Backtracking line search: halve the correction while an
-              // element fails or the residual norm does not decrease
-              // (Armijo, factor 1e-4). The predictor's prescribed part is
-              // always taken whole (it is the load), and the predictor
-              // itself is only checked for failures: its starting residual
-              // is the last step's equilibrium.
-              double alpha    = 1.;
-              bool   accepted = false;
-              for (unsigned int trial = 0; trial < 7; ++trial)
-                {
-                  for (unsigned int i = 0;
-                       i < I.partitioner->locally_owned_size();
-                       ++i)
-                    u_trial.local_element(i) =
-                      u.local_element(i) +
-                      (I.constrained[i] ? 1. : alpha) * du.local_element(i);
-                  // The rigid parts turn by the finite rotation, and their
-                  // nodes are placed on them exactly.
-                  poses_trial = part_poses;
-                  if (I.parts)
-                    {
-                      I.parts->advance(poses_trial, d_part, alpha);
-                      I.parts->place_nodes(poses_trial, u_trial);
-                    }
-                  u_trial.update_ghost_values();
-                  // The predictor takes most of the step's motion: the
-                  // penalty of its geometry is close to the converged
-                  // one's, and is held from there on.
-                  if (predictor && follows_geometry)
-                    I.follow_geometry();
-                  delta_trial = shortening;
-                  for (unsigned int s = 0; s < shortening.size(); ++s)
-                    delta_trial[s] +=
-                      (I.section_unknown[s] ? alpha : 1.) * d_delta[s];
-                  I.evaluate(u_trial,
-                             delta_trial,
-                             poses_trial,
-                             t_new,
-                             t_new,
-                             r_trial);
-                  if (!r_trial.failed &&
-                      (predictor || !s.line_search || trial == 6 ||
-                       r_trial.free_norm <= (1. - 1e-4 * alpha) * r.free_norm))
-                    {
-                      accepted = true;
-                      break;
-                    }
-                  if (!s.line_search)
-                    break;
-                  alpha *= 0.5;
-                }
-              if (!accepted)
-                {
-                  reason = r_trial.failure;
-                  break;
-                }
-              u.swap(u_trial);
-              std::swap(r, r_trial);
-              shortening.swap(delta_trial);
-              part_poses.swap(poses_trial);
-
-              const double scale =
-                std::max({r.reaction_norm, r.load_norm, s.residual_floor});
-              const double ratio = r.free_norm / scale;
-              // (Collective: on every rank, not inside the log's if.)
-              const double update = du.linfty_norm();
-              if (root)
-                log << "    iteration " << iteration + 1 << ": residual "
-                    << std::scientific << std::setprecision(3) << r.free_norm
-                    << " kN, relative " << ratio << ", update " << update
-                    << " mm, energy " << energy_increment
-                    << " J, linear iterations " << n_linear
-                    << (alpha < 1. ? ", line search " + short_number(alpha) :
-                                     std::string())
-                    << ", " << std::fixed << std::setprecision(2) << wall()
-                    << " s" << std::defaultfloat << std::setprecision(6)
-                    << std::endl;
-              bool residual_ok = r.free_norm <= s.residual_floor ||
-                                 ratio <= s.residual_tolerance;
-              // (In a step in which nothing changes, e.g. a held load with
-              // friction, even the first iteration's energy is round-off:
-              // an increment at the round-off of the strain energy is
-              // converged as well.)
-              const bool energy_ok =
-                r.free_norm <= s.residual_floor ||
-                energy_increment <= s.energy_tolerance * first_energy ||
-                energy_increment <= 1e-15 * std::abs(r.energy);
-              if (!predictor && residual_ok && energy_ok && follows_geometry &&
-                  last_step)
-                {
-                  // The run's last state (an explicit run may start from
-                  // it): converged with the penalty held, take the penalty
-                  // of this state, and go on iterating unless that changed
-                  // nothing of note: the residual with it as small as
-                  // before (within 10 times, or 1e-3 of the tolerance), so
-                  // that the state is an equilibrium with its own penalty
-                  // as closely as Newton converges (the explicit run that
-                  // starts from it sees no jolt). From the third update on,
-                  // Newton's tolerance is enough: the penalty's own
-                  // round-off can hold the residual there (8e-11 of the
-                  // reactions with the stiff rigid cylinder of
-                  // benchmarks/ironing.sh's longer slab, which was cut back
-                  // three times for it).
-                  I.follow_geometry();
-                  ++penalty_updates;
-                  I.evaluate(u, shortening, part_poses, t_new, t_new, r);
-                  const double scale_now =
-                    std::max({r.reaction_norm, r.load_norm, s.residual_floor});
-                  const double ratio_now = r.free_norm / scale_now;
-                  residual_ok =
-                    !r.failed &&
-                    (r.free_norm <= s.residual_floor ||
-                     ratio_now <= std::max(10. * ratio,
-                                           1e-3 * s.residual_tolerance) ||
-                     (penalty_updates >= 3 &&
-                      ratio_now <= s.residual_tolerance));
-                  if (root && !residual_ok)
-                    log << "    penalty stiffness of this state: residual "
-                        << std::scientific << std::setprecision(3)
-                        << r.free_norm << " kN, relative " << ratio_now
-                        << std::defaultfloat
-                        << std::setprecision(6) << std::endl;
-                }
-              if (!predictor && residual_ok && energy_ok)
-                {
-                  converged = true;
-                  ++iteration;
-                  break;
-                }
-              // Divergence: the residual grew in two iterations in a row,
-              // from the third on.
-              if (!predictor && r.free_norm > previous_norm)
-                ++growth;
-              else
-                growth = 0;
-              if (growth >= 2 && iteration >= 2)
-                {
-                  reason = "the residual grows";
-                  break;
-                }
-              previous_norm =
-                predictor ? std::numeric_limits<double>::max() : r.free_norm;
-            }
-          if (!converged && reason.empty())
-            reason = "no convergence in " + std::to_string(s.max_iterations) +
-                     " iterations";
-
-          if (!converged)
+          load_step.begin(t_new, t_new >= end_time * (1. - 1e-12));
+          std::string reason;
+          if (!load_step.iterate(reason))
             {
               // Back to the last converged state, and halve.
-              u = u_start;
-              u.update_ghost_values();
-              shortening = delta_start;
-              part_poses = poses_start;
+              load_step.restore_start();
               ++cutbacks;
-              cutback_iterations += std::min(iteration + 1, s.max_iterations);
+              cutback_iterations +=
+                std::min(load_step.iterations + 1, s.max_iterations);
               if (root)
                 log << "  Cut back: " << reason << std::endl;
               if (cutbacks > s.max_cutbacks || 0.5 * step < s.minimum_step)
@@ -1671,8 +1823,8 @@ namespace rubberdyn
           current_time = t_new;
           records.push_back({t_new,
                              step,
-                             iteration,
-                             linear_total,
+                             load_step.iterations,
+                             load_step.linear_iterations,
                              cutbacks,
                              cutback_iterations});
           cutbacks           = 0;
@@ -1685,7 +1837,7 @@ namespace rubberdyn
           for (model::ForceContribution *load : I.loads)
             load->accept_step();
           on_step();
-          if (iteration <= 4)
+          if (load_step.iterations <= 4)
             step = std::min(1.5 * step, s.maximum_step);
         }
     }

@@ -195,8 +195,8 @@ namespace rubberdyn
      * a load (model::ForceContribution::add_body_motion_load()), so that
      * nodes sticking to a surface follow it (doc/theory.md, 13.5).
      *
-     * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic laws:
-     * symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
+     * The linear systems: Trilinos Amesos MUMPS (or KLU), or CG (hyperelastic
+     * laws: symmetric tangent) or GMRES (inelastic laws) with ML AMG whose
      * near-null space holds the six rigid-body modes of the nodal
      * coordinates (three translations, three rotations), aggregating
      * nodes (three equations per node).
@@ -231,7 +231,7 @@ namespace rubberdyn
         const MPI_Comm                                            comm,
         const std::vector<PretensionLoad>                        &sections = {},
         const std::vector<model::RigidBody>                      &bodies   = {},
-        const bool bodies_move = true,
+        const bool                                 bodies_move = true,
         const std::vector<RigidPartInEquilibrium> &rigid_parts = {});
 
       ~QuasiStaticSolver();
@@ -360,15 +360,17 @@ namespace rubberdyn
 
       class Implementation;
       std::unique_ptr<Implementation> impl;
+      /** One load step's Newton iterations (run(); source file only). */
+      class LoadStep;
 
-      VectorType                  u;
-      double                      current_time = 0.;
-      std::vector<double>         reaction;
-      std::vector<Tensor<1, 3>>   reaction_moment;
-      double                      energy = 0.;
-      std::vector<double>         energy_by_group;
-      std::vector<LoadStepRecord> records;
-      std::vector<double>         section_force, shortening;
+      VectorType                    u;
+      double                        current_time = 0.;
+      std::vector<double>           reaction;
+      std::vector<Tensor<1, 3>>     reaction_moment;
+      double                        energy = 0.;
+      std::vector<double>           energy_by_group;
+      std::vector<LoadStepRecord>   records;
+      std::vector<double>           section_force, shortening;
       std::vector<model::RigidBody> part_poses;
     };
   } // namespace time_integration
