@@ -143,6 +143,13 @@ namespace rubberdyn
                                number(MPI::max(t.search_seconds, comm)));
           entries.emplace_back(names[p] + "_evaluation_seconds",
                                number(MPI::max(t.evaluation_seconds, comm)));
+          // Each rank's (the balance of the pair's work).
+          std::string by_rank = "[";
+          for (const double seconds :
+               MPI::all_gather(comm, t.evaluation_seconds))
+            by_rank += (by_rank.size() > 1 ? ", " : "") + number(seconds);
+          entries.emplace_back(names[p] + "_evaluation_seconds_by_rank",
+                               by_rank + "]");
         }
     }
   } // namespace postprocess
