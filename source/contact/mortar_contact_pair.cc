@@ -463,10 +463,10 @@ namespace rubberdyn
       FacetCorners master_corners;
       for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
         {
-          const auto             &s           = facet_nodes[pass.gap_facets[i]];
+          const auto             &s = facet_nodes[pass.gap_facets[i]];
           const MortarSlaveFacet &slave_facet = slave_facets[i];
-          const double            clearance = 1e-9 * (x[s[2]] - x[s[0]]).norm();
-          bool                    open      = true;
+          const double clearance = 1e-9 * (x[s[2]] - x[s[0]]).norm();
+          bool         open      = true;
           for (const unsigned int m : pass.candidates[i])
             {
               const auto &mc = facet_nodes[m];
@@ -494,7 +494,7 @@ namespace rubberdyn
                ++j)
             {
               const unsigned int i = pass.node_gap_facets[j];
-              open                 = open_facet[i] &&
+              open = open_facet[i] &&
                      normal[node] * slave_facets[i].unit_normal() > 0.;
             }
           open_node[node] = open;
@@ -656,10 +656,10 @@ namespace rubberdyn
               // The kept integrals at the current positions, each within
               // the capture margin as a new one must be
               // (mortar_segment_weight()).
-              bool hold =
-                kept.valid && kept_segments_hold(kept,
-                                                 slave_corners,
-                                                 slave_facet.unit_normal());
+              bool hold = kept.valid &&
+                          kept_segments_hold(kept,
+                                             slave_corners,
+                                             slave_facet.unit_normal());
               kept_weighted.resize(kept.segments.size());
               for (unsigned int k = 0; hold && k < kept.segments.size(); ++k)
                 {
@@ -795,8 +795,8 @@ namespace rubberdyn
                               data.data(),
                               data.size(),
                               "contact pair kept segments");
-      const double *value   = data.data();
-      const auto    next    = [&]() { return *value++; };
+      const double *value = data.data();
+      const auto    next  = [&]() { return *value++; };
       const auto    corners = [&](FacetCorners &c) {
         for (Point<3> &p : c)
           for (unsigned int d = 0; d < 3; ++d)
@@ -938,8 +938,8 @@ namespace rubberdyn
     MortarContactPair::energy_error() const
     {
       const Implementation::WorkAudit &audit = impl->audit;
-      return audit.started ? audit.trial_work + impl->energy + friction_work() -
-                               audit.energy_at_start :
+      return audit.started ? audit.trial_work + impl->energy +
+                               friction_work() - audit.energy_at_start :
                              0.;
     }
 
@@ -1296,6 +1296,8 @@ namespace rubberdyn
           .count();
     }
 
+
+
     const ContactPairTimings &
     MortarContactPair::timings() const
     {
@@ -1371,7 +1373,7 @@ namespace rubberdyn
             I.refresh_shown_gaps(pass);
           I.shown_gaps_partial = false;
         }
-      VectorType values(I.partitioner);
+      VectorType            values(I.partitioner);
       for (const Implementation::Pass &pass : I.passes)
         for (const unsigned int node : pass.nodes)
           if (pass.counted[node])

@@ -6,8 +6,8 @@
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
-#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
@@ -19,13 +19,14 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <ostream>
 #include <sstream>
+
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace rubberdyn
@@ -91,16 +92,13 @@ namespace rubberdyn
       const auto ends_with = [](const std::string &text,
                                 const std::string &suffix) {
         return text.size() >= suffix.size() &&
-               text.compare(text.size() - suffix.size(),
-                            suffix.size(),
+               text.compare(text.size() - suffix.size(), suffix.size(),
                             suffix) == 0;
       };
       postprocess::PlotPanel energies{"Energy balance",
                                       "energy (J)",
-                                      {"kinetic_energy",
-                                       "internal_energy",
-                                       "external_work",
-                                       "contact_work",
+                                      {"kinetic_energy", "internal_energy",
+                                       "external_work", "contact_work",
                                        "bulk_viscosity_work",
                                        "friction_work"}};
       postprocess::PlotPanel forces{"Reactions and contact forces",
@@ -133,12 +131,12 @@ namespace rubberdyn
     double
     ExplicitSimulation::smallest_element_time_step() const
     {
-      const std::vector<double> steps    = elements->reference_time_steps();
-      double                    smallest = std::numeric_limits<double>::max();
+      const std::vector<double> steps = elements->reference_time_steps();
+      double smallest = std::numeric_limits<double>::max();
       for (unsigned int e = 0; e < steps.size(); ++e)
-        smallest =
-          std::min(smallest,
-                   steps[e] * std::sqrt(element_forces->density_scaling()[e]));
+        smallest = std::min(smallest,
+                            steps[e] *
+                              std::sqrt(element_forces->density_scaling()[e]));
       return Utilities::MPI::min(smallest, model.comm);
     }
 
@@ -165,9 +163,9 @@ namespace rubberdyn
     ExplicitSimulation::write_checkpoint(const unsigned long history_rows,
                                          const unsigned int  restarts)
     {
-      namespace fs                     = std::filesystem;
-      const MPI_Comm     comm          = model.comm;
-      const unsigned int rank          = Utilities::MPI::this_mpi_process(comm);
+      namespace fs            = std::filesystem;
+      const MPI_Comm     comm = model.comm;
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
       const std::string  directory     = output.directory + "/checkpoint";
       const std::string  new_directory = directory + ".new";
       const std::string  old_directory = directory + ".old";
@@ -182,13 +180,10 @@ namespace rubberdyn
         {
           std::ostringstream out;
           out.write(rank_file_magic, sizeof(rank_file_magic));
-          const std::vector<double> record    = deformable_errors.state();
-          const double              header[6] = {double(s.step()),
-                                                 s.time(),
-                                                 next_history,
-                                                 next_checkpoint,
-                                                 max_energy_error,
-                                                 double(record.size())};
+          const std::vector<double> record = deformable_errors.state();
+          const double header[6] = {double(s.step()), s.time(),
+                                    next_history,      next_checkpoint,
+                                    max_energy_error,  double(record.size())};
           binary_io::write_doubles(out, header, 6);
           binary_io::write_doubles(out, record.data(), record.size());
           s.save(out);
@@ -278,8 +273,8 @@ namespace rubberdyn
       unsigned int  restarts;
       study >> key[0] >> time_value >> key[1] >> step >> key[2] >> ranks >>
         key[3] >> rows >> key[4] >> restarts;
-      if (!study || key[0] != "time" || key[1] != "step" || key[2] != "ranks" ||
-          key[3] != "history_rows" || key[4] != "restarts")
+      if (!study || key[0] != "time" || key[1] != "step" ||
+          key[2] != "ranks" || key[3] != "history_rows" || key[4] != "restarts")
         throw InputError(entry, path + " is damaged");
       std::string line, stored_parameters;
       std::getline(study, line); // the end of the last number's line
@@ -302,10 +297,9 @@ namespace rubberdyn
                              restart_advice);
         }
       if (ranks != Utilities::MPI::n_mpi_processes(model.comm))
-        throw InputError(entry,
-                         "the checkpoint was written by " +
-                           std::to_string(ranks) +
-                           " ranks; restart with as many");
+        throw InputError(entry, "the checkpoint was written by " +
+                                  std::to_string(ranks) +
+                                  " ranks; restart with as many");
       checkpoint_step = step;
       checkpoint_time = time_value;
       return {rows, restarts};
@@ -316,9 +310,9 @@ namespace rubberdyn
     void
     ExplicitSimulation::read_checkpoint_state()
     {
-      const MPI_Comm    comm  = model.comm;
-      const std::string entry = "Output/Restart from checkpoint";
-      const std::string path =
+      const MPI_Comm     comm  = model.comm;
+      const std::string  entry = "Output/Restart from checkpoint";
+      const std::string  path =
         checkpoint_directory + "/rank_" +
         std::to_string(Utilities::MPI::this_mpi_process(comm)) + ".bin";
       std::string   error;
@@ -336,9 +330,7 @@ namespace rubberdyn
           if (!(header[5] >= 0. && header[5] <= 1e7))
             throw std::runtime_error("corrupt energy-error record");
           std::vector<double> record(static_cast<std::size_t>(header[5]));
-          binary_io::read_doubles(in,
-                                  record.data(),
-                                  record.size(),
+          binary_io::read_doubles(in, record.data(), record.size(),
                                   "energy-error record");
           deformable_errors.set_state(record);
         }
@@ -362,8 +354,9 @@ namespace rubberdyn
               const std::string text = failure.what();
               unsigned int      rank = 0;
               if (std::sscanf(text.c_str(), "rank %u:", &rank) == 1)
-                error = checkpoint_directory + "/rank_" + std::to_string(rank) +
-                        ".bin: " + text.substr(text.find(':') + 2);
+                error = checkpoint_directory + "/rank_" +
+                        std::to_string(rank) + ".bin: " +
+                        text.substr(text.find(':') + 2);
               else
                 error = path + ": " + text;
             }
@@ -406,10 +399,10 @@ namespace rubberdyn
     void
     ExplicitSimulation::run(std::ostream &log)
     {
-      namespace fs              = std::filesystem;
-      const MPI_Comm comm       = model.comm;
-      const bool     root       = Utilities::MPI::this_mpi_process(comm) == 0;
-      const auto     wall_start = std::chrono::steady_clock::now();
+      namespace fs          = std::filesystem;
+      const MPI_Comm comm   = model.comm;
+      const bool     root   = Utilities::MPI::this_mpi_process(comm) == 0;
+      const auto wall_start = std::chrono::steady_clock::now();
       time_integration::ExplicitSolver &s = *explicit_solver;
 
       log_model(log);
@@ -448,8 +441,8 @@ namespace rubberdyn
               pair->add_surface_fields(values);
           });
       postprocessors.insert(postprocessors.begin(), std::move(field_writer));
-      next_history      = 0.;
-      next_checkpoint   = output.checkpoint_interval;
+      next_history     = 0.;
+      next_checkpoint  = output.checkpoint_interval;
       max_energy_error  = 0.;
       deformable_errors = time_integration::DeformableErrorRecord();
 
@@ -462,8 +455,7 @@ namespace rubberdyn
       if (!output.history_expressions.empty())
         {
           expressions = std::make_unique<postprocess::HistoryExpressions>(
-            columns,
-            output.history_expressions);
+            columns, output.history_expressions);
           for (const std::string &name : expressions->names())
             columns.push_back(name);
         }
@@ -476,11 +468,8 @@ namespace rubberdyn
           std::string message;
           try
             {
-              history =
-                std::make_unique<postprocess::TimeHistory>(history_path,
-                                                           columns,
-                                                           root,
-                                                           history_rows);
+              history = std::make_unique<postprocess::TimeHistory>(
+                history_path, columns, root, history_rows);
             }
           catch (const std::exception &e)
             {
@@ -493,8 +482,7 @@ namespace rubberdyn
         }
       else
         history = std::make_unique<postprocess::TimeHistory>(history_path,
-                                                             columns,
-                                                             root);
+                                                             columns, root);
 
       // Where this run (a restart: its continuation) starts: the wall time,
       // the progress estimate and the cost per element-cycle are this
@@ -502,10 +490,10 @@ namespace rubberdyn
       const unsigned long               first_step = s.step();
       const double                      first_time = s.time();
       const postprocess::SimulationView view{model, s, *elements, bodies};
-      double                            last_row_time = -1.;
-      auto                last_progress = std::chrono::steady_clock::now();
+      double     last_row_time    = -1.;
+      auto       last_progress    = std::chrono::steady_clock::now();
       std::vector<double> values;
-      const auto          write_row = [&]() {
+      const auto write_row = [&]() {
         values.assign({s.time(), s.time_step()});
         for (const auto &plugin : postprocessors)
           plugin->history_values(view, values);
@@ -593,13 +581,15 @@ namespace rubberdyn
       // relative to the energy through the deformable parts.
       max_deformable_error =
         deformable_errors.value(0.01 * s.energies().largest_energy);
-      max_energy_error = s.energies().largest_energy > 0. ?
-                           max_energy_error / s.energies().largest_energy :
-                           0.;
+      max_energy_error =
+        s.energies().largest_energy > 0. ?
+          max_energy_error / s.energies().largest_energy :
+          0.;
       // run_summary.json: the run's figures, then the plugins' entries.
-      const double wall = std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - wall_start)
-                            .count();
+      const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                      wall_start)
+          .count();
       // The cells whose forces the elements compute: a rigid part's cells
       // only give its mass (the bushing's rounded drop weight and support
       // have 1200 at its default mesh).
@@ -608,27 +598,24 @@ namespace rubberdyn
       const double element_cycles =
         double(deformable_cells) * std::max<double>(s.step() - first_step, 1);
       time_integration::StepTimings timings = s.timings();
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
       // Each rank's element forces and contact (ns per element-cycle, as
       // the breakdown): where the ranks' loads differ, the faster waits.
       const auto by_rank = [&](const double seconds) {
         std::string list = "[";
         for (const double t : Utilities::MPI::all_gather(comm, seconds))
           list += (list.size() > 1 ? ", " : "") +
-                  json_number(1e9 * t * Utilities::MPI::n_mpi_processes(comm) /
-                              element_cycles);
+                  json_number(1e9 * t * n_ranks / element_cycles);
         return list + "]";
       };
       const std::string element_forces_by_rank =
                           by_rank(timings.element_forces),
                         contact_by_rank = by_rank(timings.contact);
-      for (double *t : {&timings.element_forces,
-                        &timings.contact,
-                        &timings.vector_updates,
-                        &timings.communication,
+      for (double *t : {&timings.element_forces, &timings.contact,
+                        &timings.vector_updates, &timings.communication,
                         &timings.output})
         *t = Utilities::MPI::max(*t, comm);
-      const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
-      const auto         per_cycle = [&](const double seconds) {
+      const auto per_cycle = [&](const double seconds) {
         return json_number(1e9 * seconds * n_ranks / element_cycles);
       };
       std::vector<postprocess::SummaryEntry> entries = {
@@ -684,7 +671,8 @@ namespace rubberdyn
           log << "Finished: " << s.step() << " steps to t = " << s.time()
               << " ms; largest energy error " << max_energy_error * 100.
               << " % of the largest energy, " << max_deformable_error * 100.
-              << " % of the energy through the deformable parts" << std::endl;
+              << " % of the energy through the deformable parts"
+              << std::endl;
           for (const auto &plugin : postprocessors)
             plugin->final_log(log);
           if (max_deformable_error > 0.01)

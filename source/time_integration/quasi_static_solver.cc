@@ -21,6 +21,8 @@
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
+#include "rigid_part_unknowns.h"
+
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
@@ -30,8 +32,6 @@
 #include <limits>
 #include <ostream>
 #include <sstream>
-
-#include "rigid_part_unknowns.h"
 
 namespace rubberdyn
 {
@@ -238,7 +238,7 @@ namespace rubberdyn
       /** The prescribed increments on coupled_partitioner (predictor). */
       VectorType coupled_increment;
       /** The loads' couplings_version() when the pattern was built. */
-      std::vector<unsigned int>      pattern_versions;
+      std::vector<unsigned int> pattern_versions;
       TrilinosWrappers::SparseMatrix matrix;
       TrilinosWrappers::MPI::Vector  rhs, solution;
       /** Rigid-body modes of the owned dofs, [mode][local dof]. */
@@ -550,9 +550,10 @@ namespace rubberdyn
 
 
     void
-    QuasiStaticSolver::Implementation::add_body_motion_load(const VectorType &u,
-                                                            const double t_old,
-                                                            const double t_new)
+    QuasiStaticSolver::Implementation::add_body_motion_load(
+      const VectorType &u,
+      const double      t_old,
+      const double      t_new)
     {
       place_bodies(t_old);
       std::vector<model::RigidBody> moved = bodies;
@@ -589,8 +590,7 @@ namespace rubberdyn
           const double          ramp = std::min(t / load.lock_time, 1.);
           section_unknown[s] =
             load.force_control && t <= load.lock_time * (1. + 1e-12);
-          section_target[s] =
-            section_unknown[s] ? load.target_force * ramp : 0.;
+          section_target[s] = section_unknown[s] ? load.target_force * ramp : 0.;
           // A locked force-controlled section keeps its shortening.
           prescribed[s] = section_unknown[s] ? 0. :
                           load.force_control ? shortening[s] :
@@ -682,10 +682,11 @@ namespace rubberdyn
           parts->set_linearisation_point(u, poses);
           r.part_residual = parts->project(r.force);
           for (unsigned int j = 0; j < r.part_residual.size(); ++j)
-            sums[0] +=
-              std::pow(r.part_residual[j] /
-                         (parts->is_rotation(j) ? parts->length_scale(j) : 1.),
-                       2);
+            sums[0] += std::pow(r.part_residual[j] /
+                                  (parts->is_rotation(j) ?
+                                     parts->length_scale(j) :
+                                     1.),
+                                2);
         }
       r.free_norm     = std::sqrt(sums[0]);
       r.reaction_norm = std::sqrt(sums[1]);
@@ -773,8 +774,8 @@ namespace rubberdyn
               coupled_partitioner->local_to_global(i);
             step_constraints.add_line(global);
             if (predictor)
-              step_constraints
-                .set_inhomogeneity(global, coupled_increment.local_element(i));
+              step_constraints.set_inhomogeneity(
+                global, coupled_increment.local_element(i));
           }
       step_constraints.close();
 
@@ -802,9 +803,9 @@ namespace rubberdyn
         });
       // The loads' tangents (the pressures' load stiffness, contact),
       // block by block.
-      FullMatrix<double>        block_matrix;
-      Vector<double>            block_rhs;
-      std::vector<unsigned int> block_local;
+      FullMatrix<double>                   block_matrix;
+      Vector<double>                       block_rhs;
+      std::vector<unsigned int>            block_local;
       for (const model::ForceContribution *load : loads)
         load->add_tangents(
           point,
@@ -846,11 +847,8 @@ namespace rubberdyn
                               "rigid parts cannot border that block yet "
                               "(run on one rank)"));
                 if (!beyond)
-                  parts->add_block(block_local.data(),
-                                   n,
-                                   K.data(),
-                                   part_column,
-                                   part_row);
+                  parts->add_block(
+                    block_local.data(), n, K.data(), part_column, part_row);
               }
             step_constraints.distribute_local_to_global(block_matrix,
                                                         block_rhs,
@@ -879,7 +877,7 @@ namespace rubberdyn
       // diagonal of the matrix's mean scale (its solution is overwritten).
       // (Models without such rows skip the scale and the second compress.)
       {
-        const unsigned int n_owned = partitioner->locally_owned_size();
+        const unsigned int                   n_owned = partitioner->locally_owned_size();
         std::vector<types::global_dof_index> empty_rows;
         for (unsigned int i = 0; i < n_owned; ++i)
           if (constrained[i] &&
@@ -895,8 +893,8 @@ namespace rubberdyn
                     matrix.diag_element(partitioner->local_to_global(i)));
                   count += 1.;
                 }
-            sum                = Utilities::MPI::sum(sum, comm);
-            count              = Utilities::MPI::sum(count, comm);
+            sum   = Utilities::MPI::sum(sum, comm);
+            count = Utilities::MPI::sum(count, comm);
             const double scale = count > 0. && sum > 0. ? sum / count : 1.;
             for (const types::global_dof_index row : empty_rows)
               matrix.set(row, row, scale);
@@ -910,8 +908,8 @@ namespace rubberdyn
         {
           for (unsigned int s = 0; s < sections.size(); ++s)
             {
-              section_column[s]   = 0.;
-              section_row[s]      = 0.;
+              section_column[s] = 0.;
+              section_row[s]    = 0.;
               section_diagonal[s] = 0.;
               section_rhs[s]      = -r.section_residual[s];
             }
@@ -1002,8 +1000,7 @@ namespace rubberdyn
       if (use_direct)
         {
           TrilinosWrappers::SolverDirect::AdditionalData data(
-            false,
-            settings.direct_solver);
+            false, settings.direct_solver);
           direct =
             std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
                                                              data);
@@ -1071,7 +1068,7 @@ namespace rubberdyn
             return cg_iterations + gmres();
           }
       };
-      unsigned int       n_iter  = linear_solve(solution, rhs);
+      unsigned int n_iter = linear_solve(solution, rhs);
       const unsigned int n_owned = partitioner->locally_owned_size();
       // a: the correction without the sections' (prescribed increments on
       // the constrained dofs).
@@ -1090,7 +1087,8 @@ namespace rubberdyn
       if (m == 0)
         return n_iter;
       const auto column_of = [&](const unsigned int k) -> const VectorType & {
-        return k < n_sections ? section_column[k] : part_column[k - n_sections];
+        return k < n_sections ? section_column[k] :
+                                part_column[k - n_sections];
       };
       const auto row_of = [&](const unsigned int k) -> const VectorType & {
         return k < n_sections ? section_row[k] : part_row[k - n_sections];
@@ -1157,9 +1155,9 @@ namespace rubberdyn
           for (unsigned int i = 0; i < n_unknown; ++i)
             {
               const unsigned int k = unknown[i];
-              right(i) =
-                (k < n_sections ? section_rhs[k] : part_rhs[k - n_sections]) -
-                dot(row_of(k), du);
+              right(i) = (k < n_sections ? section_rhs[k] :
+                                           part_rhs[k - n_sections]) -
+                         dot(row_of(k), du);
               for (unsigned int l = 0; l < m; ++l)
                 {
                   const double entry = border(k, l) - dot(row_of(k), b[l]);
@@ -1318,7 +1316,8 @@ namespace rubberdyn
       Implementation::Residual r;
       std::vector<double>      unused;
       impl->set_section_targets(current_time, shortening, unused);
-      impl->evaluate(u, shortening, part_poses, current_time, current_time, r);
+      impl->evaluate(
+        u, shortening, part_poses, current_time, current_time, r);
       if (r.failed)
         throw QuasiStaticFailure(
           "the state at t = " + short_number(current_time, 6) +

@@ -231,7 +231,7 @@ namespace rubberdyn
         const MPI_Comm                                            comm,
         const std::vector<PretensionLoad>                        &sections = {},
         const std::vector<model::RigidBody>                      &bodies   = {},
-        const bool                                 bodies_move = true,
+        const bool bodies_move = true,
         const std::vector<RigidPartInEquilibrium> &rigid_parts = {});
 
       ~QuasiStaticSolver();
@@ -363,14 +363,14 @@ namespace rubberdyn
       /** One load step's Newton iterations (run(); source file only). */
       class LoadStep;
 
-      VectorType                    u;
-      double                        current_time = 0.;
-      std::vector<double>           reaction;
-      std::vector<Tensor<1, 3>>     reaction_moment;
-      double                        energy = 0.;
-      std::vector<double>           energy_by_group;
-      std::vector<LoadStepRecord>   records;
-      std::vector<double>           section_force, shortening;
+      VectorType                  u;
+      double                      current_time = 0.;
+      std::vector<double>         reaction;
+      std::vector<Tensor<1, 3>>   reaction_moment;
+      double                      energy = 0.;
+      std::vector<double>         energy_by_group;
+      std::vector<LoadStepRecord> records;
+      std::vector<double>         section_force, shortening;
       std::vector<model::RigidBody> part_poses;
     };
   } // namespace time_integration
