@@ -61,11 +61,17 @@ def cfc_filter(values, dt_seconds, cfc=180.):
     b2 = (-1. + math.sqrt(2.) * wa - wa * wa) / d
 
     def one_pass(x):
-        y = list(x[:2])
+        # The filter starts at rest at the first value: two samples of it
+        # before the record. Starting from the record's first two samples
+        # as outputs kicks the filter with their difference as a rate (a
+        # weight touching between the first two rows: 105 kN at t = 0 for
+        # a 95 kN peak, decaying over 3 ms).
+        x = [x[0], x[0]] + list(x)
+        y = [x[0], x[0]]
         for n in range(2, len(x)):
             y.append(a0 * x[n] + a1 * x[n - 1] + a2 * x[n - 2] +
                      b1 * y[n - 1] + b2 * y[n - 2])
-        return y
+        return y[2:]
 
     return one_pass(one_pass(values)[::-1])[::-1]
 
