@@ -25,17 +25,34 @@ namespace rubberdyn
       std::vector<elements::ElementGroup>
       element_groups(const Model &model)
       {
+        // The entry a hull collapse's message names: the part's own, if it
+        // has one; else, with several deformable F-bar parts, both the
+        // part's and the model's, so that the message tells the part (the
+        // model-wide one alone would leave the user to find it).
+        unsigned int n_fbar_parts = 0;
+        for (const Part &part : model.parts)
+          if (!part.rigid && part.formulation == elements::Formulation::fbar)
+            ++n_fbar_parts;
         std::vector<elements::ElementGroup> groups;
         // A rigid part's group has no cells: no element forces, no step.
         for (const Part &part : model.parts)
-          groups.push_back(
-            {part.rigid ? std::set<types::material_id>() : part.material_ids,
-             part.law.get(),
-             part.formulation,
-             part.fbar_stabilization,
-             part.fbar_stabilization ?
-               "Parts/" + part.name + "/F-bar stabilization" :
-               std::string(elements::model_fbar_stabilization_entry)});
+          {
+            const std::string part_entry =
+              "Parts/" + part.name + "/F-bar stabilization";
+            std::string entry =
+              part.fbar_stabilization ?
+                part_entry :
+                std::string(elements::model_fbar_stabilization_entry);
+            if (!part.fbar_stabilization && n_fbar_parts > 1)
+              entry = part_entry + " (this part) or " + entry +
+                      " (every part without its own)";
+            groups.push_back(
+              {part.rigid ? std::set<types::material_id>() : part.material_ids,
+               part.law.get(),
+               part.formulation,
+               part.fbar_stabilization,
+               entry});
+          }
         return groups;
       }
 

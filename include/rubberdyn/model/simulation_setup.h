@@ -38,6 +38,11 @@ namespace rubberdyn
       /**
        * One element group per part, in the parts' order: its material ids
        * (none for a rigid part: no element forces), law and formulation.
+       * The entry a group's F-bar hull collapse names is the part's own
+       * `Parts/<name>/F-bar stabilization` if it sets one; else, in a model
+       * of several deformable F-bar parts, that one and the model-wide
+       * `Time integration/F-bar stabilization`, so that the message tells
+       * the part; else the model-wide one.
        */
       std::vector<elements::ElementGroup>
       element_groups(const Model &model);
