@@ -39,11 +39,10 @@ namespace rubberdyn
           {
             const std::string part_entry =
               "Parts/" + part.name + "/F-bar stabilization";
-            std::string entry =
-              part.fbar_stabilization ?
-                part_entry :
-                std::string(elements::model_fbar_stabilization_entry);
-            if (!part.fbar_stabilization && n_fbar_parts > 1)
+            std::string entry = elements::model_fbar_stabilization_entry;
+            if (part.fbar_stabilization)
+              entry = part_entry;
+            else if (n_fbar_parts > 1)
               entry = part_entry + " (this part) or " + entry +
                       " (every part without its own)";
             groups.push_back(

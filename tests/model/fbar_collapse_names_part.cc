@@ -29,12 +29,12 @@
 // Fails on the code before this test: every message there named the
 // model-wide entry alone.
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/simulation_setup.h>
 
-#include <map>
 #include <string>
 
 #include "../tests.h"
@@ -55,17 +55,16 @@ namespace
   std::string
   pinched_message(const model::Model &model, const types::material_id id)
   {
-    std::map<unsigned int, unsigned int> cells_at_vertex;
-    for (const auto &cell : model.dof_handler.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        ++cells_at_vertex[cell->vertex_index(v)];
+    const auto cells_at_vertex =
+      GridTools::vertex_to_cell_map(model.triangulation);
 
     VectorType u(model.partitioner), v(model.partitioner), f(model.partitioner);
     bool       pinched = false;
     for (const auto &cell : model.dof_handler.active_cell_iterators())
       if (!pinched && cell->material_id() == id)
         for (const unsigned int vertex : cell->vertex_indices())
-          if (!pinched && cells_at_vertex[cell->vertex_index(vertex)] == 1)
+          if (!pinched &&
+              cells_at_vertex[cell->vertex_index(vertex)].size() == 1)
             {
               const Tensor<1, 3> to_centre =
                 cell->center() - cell->vertex(vertex);

@@ -276,8 +276,8 @@ namespace rubberdyn
        */
       std::optional<double> fbar_stabilization;
       /**
-       * The input entry that sets the group's beta, named in the message
-       * of an F-bar hull collapse.
+       * The input entry (or entries, as one phrase) that sets the group's
+       * beta, named in the message of an F-bar hull collapse.
        */
       std::string fbar_stabilization_entry;
     };
