@@ -7,8 +7,10 @@
 # the impactor has left the rubber; End time 60 ms is only a safety net).
 # Extra parameter lines can be appended through the environment variable
 # DROP_TEST_EXTRA_PRM. The log goes to OUTPUT_DIR/log.txt. The shipped file
-# is copied into case.prm (rubberdyn refuses 'include' lines); the lines
-# after it override its values.
+# is copied into case.prm, so that REUSE below can compare whole cases (an
+# include line would hide a change of the shipped file); the lines after it
+# override its values. parameter_files/drop_test_matrix/ shows the same
+# cases as variants that include the shipped file.
 # With REUSE=1 a case is not run again if OUTPUT_DIR holds a finished run
 # (run_summary.json) of the very same case.prm, newer than the executable
 # and the shipped parameter file.

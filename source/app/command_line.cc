@@ -4,11 +4,15 @@
 #include <rubberdyn/app/command_line.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/base/run_options.h>
 #include <rubberdyn/io/parameter_file.h>
 #include <rubberdyn/materials/yeoh_fit.h>
 #include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/studies/study.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -48,6 +52,18 @@ namespace rubberdyn
         "                                comma-separated list of column names\n"
         "                                drawn in one panel\n"
         "  rubberdyn --help              this text\n"
+        "\n"
+        "Options of a run, before FILE.prm (testing and diagnostics; they change\n"
+        "nothing in the model or its results):\n"
+        "  --simulate-crash-at T         every rank kills itself (SIGKILL) when the\n"
+        "                                explicit run reaches T ms: a machine that\n"
+        "                                dies between checkpoints, to test a\n"
+        "                                restart (doc/restarts.md)\n"
+        "  --trace-pair NAME[:EVERY]     write the energy ledger of contact pair\n"
+        "                                NAME to the error stream, summed over\n"
+        "                                EVERY accepted steps (default 1000;\n"
+        "                                doc/contact.md, \"Where a pair makes or\n"
+        "                                loses energy\")\n"
         "\n"
         "Units everywhere: mm, ms, kg, kN, GPa (energy J = kN mm, density\n"
         "kg/mm^3, velocity mm/ms = m/s). Example parameter files are in\n"
@@ -258,6 +274,48 @@ namespace rubberdyn
           }
         return 0;
       }
+
+      /** The value of `--simulate-crash-at T`: a time in ms, >= 0. */
+      double
+      parse_crash_time(const std::string &option, const std::string &value)
+      {
+        char        *end  = nullptr;
+        const double time = std::strtod(value.c_str(), &end);
+        if (value.empty() || *end != '\0' || !(time >= 0.) ||
+            !std::isfinite(time))
+          throw InputError(option,
+                           "needs a time in ms (a number >= 0), not '" +
+                             value.substr(0, 40) + "'");
+        return time;
+      }
+
+
+
+      /** The value of `--trace-pair NAME[:EVERY]`, into @p options. */
+      void
+      parse_traced_pair(const std::string &option,
+                        const std::string &value,
+                        RunOptions        &options)
+      {
+        const std::size_t colon = value.find(':');
+        options.traced_pair     = value.substr(0, colon);
+        if (options.traced_pair.empty())
+          throw InputError(option,
+                           "needs the name of a contact pair "
+                           "(NAME or NAME:EVERY), not '" +
+                             value.substr(0, 40) + "'");
+        if (colon == std::string::npos)
+          return;
+        const std::string every = value.substr(colon + 1);
+        char             *end   = nullptr;
+        const long        n     = std::strtol(every.c_str(), &end, 10);
+        if (every.empty() || *end != '\0' || n < 1 || n > 1000000000)
+          throw InputError(option,
+                           "EVERY in NAME:EVERY must be a whole number of "
+                           "steps from 1 to 1e9, not '" +
+                             every.substr(0, 40) + "'");
+        options.trace_every = static_cast<unsigned int>(n);
+      }
     } // namespace
 
 
@@ -290,13 +348,32 @@ namespace rubberdyn
             return fit_yeoh({arguments.begin() + 1, arguments.end()});
           if (arguments[0] == "--plot")
             return plot({arguments.begin() + 1, arguments.end()});
-          if (arguments[0].rfind("-", 0) == 0 || arguments.size() > 1)
+          // The options of a run, then the one parameter file.
+          RunOptions   options;
+          unsigned int i = 0;
+          for (; i + 1 < arguments.size(); i += 2)
+            if (arguments[i] == "--simulate-crash-at")
+              options.simulate_crash_at =
+                parse_crash_time(arguments[i], arguments[i + 1]);
+            else if (arguments[i] == "--trace-pair")
+              parse_traced_pair(arguments[i], arguments[i + 1], options);
+            else
+              break;
+          if (i == arguments.size())
             {
-              report_error("unknown option or extra argument in '" +
-                           arguments.back() + "'\n" + usage_text);
+              report_error("no parameter file given after the options\n" +
+                           std::string(usage_text));
               return 1;
             }
-          return run_study(arguments[0]);
+          if (i + 1 != arguments.size() || arguments[i].rfind("-", 0) == 0)
+            {
+              report_error("unknown option or extra argument in '" +
+                           arguments[i] +
+                           "'\n" + usage_text);
+              return 1;
+            }
+          set_run_options(options);
+          return run_study(arguments[i]);
         }
       catch (const InputError &error)
         {

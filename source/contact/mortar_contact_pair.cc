@@ -5,6 +5,7 @@
 
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/base/run_options.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/model/model.h>
 
@@ -38,10 +39,9 @@ namespace rubberdyn
       for (unsigned int k = 0; k < model.contact_pairs.size(); ++k)
         if (model.contact_pairs[k].name == definition.name)
           channel = 1 + k % 199; // deal.II's channels are below 200
-      if (const char *traced = std::getenv("RUBBERDYN_PAIR_TRACE"))
-        trace.enabled = definition.name == traced;
-      if (const char *every = std::getenv("RUBBERDYN_PAIR_TRACE_EVERY"))
-        trace.report_every = std::max(1, std::atoi(every));
+      // --trace-pair NAME[:EVERY] (RunOptions; doc/contact.md).
+      trace.enabled      = definition.name == run_options().traced_pair;
+      trace.report_every = std::max(1u, run_options().trace_every);
       // This rank's facets, then all of them, in an order that does not
       // depend on the partition (by their centres).
       std::vector<GatheredFacet>           own;

@@ -685,15 +685,15 @@ namespace rubberdyn
       WorkAudit audit;
 
       /**
-       * The developer's trace of a pair's energy error (environment
-       * variable RUBBERDYN_PAIR_TRACE=<pair name>; doc/contact.md,
+       * The developer's trace of a pair's energy error (command-line
+       * option --trace-pair <pair name>[:EVERY], RunOptions; doc/contact.md,
        * "Where a pair makes energy"): at each accepted evaluation, each
        * slave node's share of the step's error, the trapezoidal work of
        * its traction's forces (the normal and the tangential part through
        * its rows of the segments, and its share of the weights' forces)
        * plus the change of its normal and tangential springs' energy plus
        * friction's dissipation at it. Summed over
-       * RUBBERDYN_PAIR_TRACE_EVERY steps and written to stderr with the
+       * EVERY steps (default 1000) and written to stderr with the
        * largest nodes; single steps where a share or the pair's error
        * moved by more than 0.02 J are written at once. The state of the
        * last accepted evaluation and the sums since the last report.
@@ -728,7 +728,7 @@ namespace rubberdyn
          * there (J). */
         unsigned int steps_since_report = 0;
         double       error_at_report    = 0.;
-        /** Steps between reports (RUBBERDYN_PAIR_TRACE_EVERY). */
+        /** Steps between reports (RunOptions::trace_every). */
         unsigned int report_every = 1000;
       };
       Trace trace;

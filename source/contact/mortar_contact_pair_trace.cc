@@ -1,5 +1,5 @@
 // The developer's trace of a mortar pair's energy error
-// (RUBBERDYN_PAIR_TRACE=<pair name>; doc/contact.md, "Where a pair makes
+// (--trace-pair <pair name>[:EVERY]; doc/contact.md, "Where a pair makes
 // energy"): which slave nodes make a step's error, and how.
 //
 // The pair's forces are linear in its nodes' tractions: node a's traction
@@ -16,7 +16,7 @@
 // segments' tractions (WN), their tangential part (WT) and the weights'
 // forces (Ww), the energy into the normal (EN) and the tangential springs
 // (ET): a conservative normal part has WN = -dEN, a consistent friction
-// WT + dET + D = 0. Every RUBBERDYN_PAIR_TRACE_EVERY accepted steps
+// WT + dET + D = 0. Every EVERY accepted steps
 // (default 1000) the shares summed since the last report are written, with
 // the largest nodes' and the two largest nodes' segments.
 #include <rubberdyn/contact/mortar_contact_pair.h>

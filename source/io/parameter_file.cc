@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -199,6 +200,13 @@ namespace rubberdyn
           return result;
         }
 
+        /** The number of lines. */
+        unsigned int
+        size() const
+        {
+          return lines.size();
+        }
+
         /** The subsections still open at the end of the file ("A/B/"). */
         std::string open_path;
 
@@ -271,57 +279,233 @@ namespace rubberdyn
           }
       }
 
+      /** The deepest chain of includes read: the file given is depth 0. */
+      constexpr unsigned int max_include_depth = 8;
+
       /**
-       * Refuse an `include` line. ParameterHandler would open the named
-       * file itself (relative to the working directory) and parse it
-       * unchecked: no limit on its size or its lines (`include /dev/zero`
-       * reads until memory runs out), a file that includes itself
-       * recurses until the stack overflows, and messages about it name
-       * neither this file nor the line. The logical lines are rebuilt as
-       * ParameterHandler::parse_input() does (each physical line trimmed,
-       * a trailing backslash joins the next one without a space; the
-       * comment and tabs go before the keyword is looked for), so that no
-       * spelling of the directive slips through.
+       * The text ParameterHandler reads: the file given with every
+       * `include` line replaced by the lines of the file it names, and, for
+       * each line of that text, the file it came from and its line there, so
+       * that a message names the file and line the user wrote.
+       *
+       * deal.II's own `include` is never reached (no include line is left):
+       * ParameterHandler would open the named file itself, relative to the
+       * working directory, and parse it unchecked — no limit on its size or
+       * its lines (`include /dev/zero` reads until memory runs out), a file
+       * that includes itself recursing until the stack overflows, messages
+       * naming neither file nor line. Here a path is relative to the file
+       * that includes it, the chain is at most max_include_depth deep, a
+       * cycle is refused with the chain named, and every included file is
+       * under the same limits on size and line length as the file given
+       * (and all of them together under max_file_size).
        */
-      void
-      refuse_include_lines(const std::string &filename,
-                           const std::string &text,
-                           const FileLines   &file)
+      class ExpandedText
       {
-        std::istringstream in(text);
-        std::string        raw, logical;
-        unsigned int       first_line = 1;
-        for (unsigned int n = 1; std::getline(in, raw); ++n)
-          {
-            if (logical.empty())
-              first_line = n;
-            std::string trimmed   = fold_whitespace(raw);
-            const bool  continued = !trimmed.empty() && trimmed.back() == '\\';
-            if (continued)
-              trimmed.pop_back();
-            logical += trimmed;
-            if (continued)
-              continue;
-            const std::string statement =
-              fold_whitespace(logical.substr(0, logical.find('#')));
-            logical.clear();
-            if (!starts_with(statement, "include ") &&
-                !starts_with(statement, "INCLUDE "))
-              continue;
-            const std::string path = file.path_at(first_line);
-            throw InputError(
-              filename,
-              "line " + std::to_string(first_line) + ", " +
-                (path.empty() ?
-                   std::string("at the top level") :
-                   "in subsection '" + path.substr(0, path.size() - 1) + "'") +
-                ": '" + abridged(statement) +
-                "' is not supported: rubberdyn reads the one parameter file "
-                "it is given, so that its limits on size and line length "
-                "apply to every line; copy the entries of the other file "
-                "into this one (later 'set' lines override earlier ones)");
-          }
-      }
+      public:
+        /** Read @p filename and everything it includes. */
+        explicit ExpandedText(const std::string &filename)
+          : top(filename)
+        {
+          std::vector<Frame> chain;
+          add_file(filename, std::filesystem::path(filename), chain);
+        }
+
+        /** The whole text. */
+        std::string text;
+
+        /**
+         * The file line @p n (from 1) of the text came from: the file given,
+         * or "<file given>, line 2 -> base.prm" for an included one (the
+         * chain of includes that reached it).
+         */
+        std::string
+        file_of(const unsigned int n) const
+        {
+          return (n >= 1 && n <= origins.size()) ? files[origins[n - 1].file] :
+                                                   top;
+        }
+
+        /** The line number in its own file of line @p n of the text. */
+        unsigned int
+        line_in_file(const unsigned int n) const
+        {
+          return (n >= 1 && n <= origins.size()) ? origins[n - 1].line : n;
+        }
+
+      private:
+        /** One file of the chain being read. */
+        struct Frame
+        {
+          /** How messages name it (the chain that reached it). */
+          std::string shown;
+          /** Its canonical path, to find a cycle. */
+          std::filesystem::path canonical;
+        };
+
+        struct Origin
+        {
+          unsigned int file;
+          unsigned int line;
+        };
+
+        std::string              top;
+        std::vector<std::string> files;
+        std::vector<Origin>      origins;
+
+        /**
+         * Read @p path (named @p shown in messages) at the end of @p chain,
+         * after the checks that make it safe to read.
+         */
+        std::string
+        read_checked(const std::string                 &shown,
+                     const std::filesystem::path       &path,
+                     const std::vector<Frame>          &chain,
+                     std::filesystem::path             &canonical)
+        {
+          std::error_code error;
+          if (std::filesystem::is_directory(path, error))
+            throw InputError(shown,
+                             chain.empty() ?
+                               "is a directory, not a parameter file" :
+                               "the included path is a directory, not a "
+                               "parameter file");
+          std::ifstream in(path, std::ios::binary);
+          if (!in)
+            throw InputError(shown,
+                             chain.empty() ?
+                               "cannot open the parameter file" :
+                               "cannot open the included file (a path in "
+                               "an include line is relative to the file "
+                               "that has the line)");
+          canonical = std::filesystem::weakly_canonical(path, error);
+          if (error)
+            canonical = path;
+          for (const Frame &frame : chain)
+            if (frame.canonical == canonical)
+              throw InputError(shown,
+                               "the file includes itself through this chain "
+                               "(a cycle): remove one of the include lines");
+          // Read at most one byte more than allowed: a device such as
+          // /dev/zero never ends.
+          std::string text(max_file_size + 1, '\0');
+          in.read(text.data(), static_cast<std::streamsize>(text.size()));
+          text.resize(static_cast<std::size_t>(in.gcount()));
+          if (text.size() > max_file_size)
+            throw InputError(shown,
+                             std::string(chain.empty() ? "the file" :
+                                                         "the included file") +
+                               " is larger than " +
+                               std::to_string(max_file_size) +
+                               " bytes; is it a parameter file?");
+          if (this->text.size() + text.size() > max_file_size)
+            throw InputError(shown,
+                             "with this file the included files hold more "
+                             "than " +
+                               std::to_string(max_file_size) +
+                               " bytes in all; is it a parameter file?");
+          return text;
+        }
+
+        /** Append @p path and what it includes to the text. */
+        void
+        add_file(const std::string           &shown,
+                 const std::filesystem::path &path,
+                 std::vector<Frame>          &chain)
+        {
+          std::filesystem::path canonical;
+          const std::string file_text =
+            read_checked(shown, path, chain, canonical);
+          const FileLines file(file_text);
+          check_line_lengths(shown, file_text, file);
+          if (!chain.empty())
+            check_balanced(shown, file);
+
+          chain.push_back({shown, canonical});
+          files.push_back(shown);
+          const unsigned int file_index = files.size() - 1;
+
+          // The logical lines, rebuilt as ParameterHandler::parse_input()
+          // does (each physical line trimmed, a trailing backslash joins the
+          // next one; the comment and tabs go before the keyword is looked
+          // for), so that no spelling of the directive slips through.
+          std::istringstream       in(file_text);
+          std::string              raw, logical;
+          std::vector<std::string> physical;
+          unsigned int             first_line = 1;
+          for (unsigned int n = 1; std::getline(in, raw); ++n)
+            {
+              if (physical.empty())
+                first_line = n;
+              physical.push_back(raw);
+              std::string trimmed   = fold_whitespace(raw);
+              const bool  continued = !trimmed.empty() && trimmed.back() == '\\';
+              if (continued)
+                trimmed.pop_back();
+              logical += trimmed;
+              if (continued)
+                continue;
+              const std::string statement =
+                fold_whitespace(logical.substr(0, logical.find('#')));
+              logical.clear();
+              if (starts_with(statement, "include ") ||
+                  starts_with(statement, "INCLUDE "))
+                {
+                  const std::string included = statement.substr(8);
+                  const std::string at =
+                    shown + ", line " + std::to_string(first_line);
+                  if (chain.size() > max_include_depth)
+                    throw InputError(at + " -> " + included,
+                                     "includes are nested more than " +
+                                       std::to_string(max_include_depth) +
+                                       " deep");
+                  // Relative to the file that has the include line.
+                  std::filesystem::path target(included);
+                  if (target.is_relative())
+                    target = path.parent_path() / target;
+                  add_file(at + " -> " + included, target, chain);
+                }
+              else
+                for (unsigned int k = 0; k < physical.size(); ++k)
+                  {
+                    text += physical[k];
+                    text += '\n';
+                    origins.push_back({file_index, first_line + k});
+                  }
+              physical.clear();
+            }
+          chain.pop_back();
+        }
+
+        /**
+         * An included file must close every subsection it opens and no
+         * other: its entries land in the subsection of its include line,
+         * as with ParameterHandler's own `include`.
+         */
+        static void
+        check_balanced(const std::string &shown, const FileLines &file)
+        {
+          if (!file.open_path.empty())
+            throw InputError(shown,
+                             "subsection '" +
+                               file.open_path.substr(0,
+                                                     file.open_path.size() -
+                                                       1) +
+                               "' is not closed in this included file: an "
+                               "included file closes what it opens");
+          int depth = 0;
+          for (unsigned int n = 1; n <= file.size(); ++n)
+            {
+              const ParsedLine line = file.line(n);
+              if (line.kind == ParsedLine::Kind::subsection)
+                ++depth;
+              else if (line.kind == ParsedLine::Kind::end && --depth < 0)
+                throw InputError(shown,
+                                 "line " + std::to_string(n) +
+                                   ": this 'end' closes a subsection the "
+                                   "included file did not open");
+            }
+        }
+      };
 
 
 
@@ -341,9 +525,12 @@ namespace rubberdyn
        * entry named Impactor mass does not match ...").
        */
       std::string
-      parse_error_message(const std::string &filename,
-                          const FileLines   &file,
-                          const std::string &text)
+      parse_error_message(const std::string  &filename,
+                          const FileLines    &file,
+                          const ExpandedText &expanded,
+                          const std::string  &text,
+                          const std::set<std::string> &listed_paths,
+                          std::string        &file_chain)
       {
         if (starts_with(text,
                         "There are unequal numbers of 'subsection' "
@@ -381,7 +568,11 @@ namespace rubberdyn
           rest.erase(0, 2);
 
         const std::string path  = file.path_at(line);
-        const std::string where = "line " + std::to_string(line) + ", ";
+        // The line as the user wrote it: in the file given, or in the
+        // included file (@p file_chain) it came from.
+        file_chain              = expanded.file_of(line);
+        const std::string where =
+          "line " + std::to_string(expanded.line_in_file(line)) + ", ";
 
         // The value may hold anything, so the fixed phrases around it are
         // found from the right. An empty value leaves one space between
@@ -433,6 +624,15 @@ namespace rubberdyn
             std::replace(dotted.begin(), dotted.end(), '/', '.');
             if (!dotted.empty() && starts_with(name, dotted))
               name.erase(0, dotted.size());
+            // Under a subsection whose members are named in its `Names`
+            // entry (Parts, Boundary conditions, ...), a member not named
+            // there is what the user most likely wrote.
+            if (!path.empty() && listed_paths.count(path) > 0)
+              return where + "subsection '" + path + abridged(name) +
+                     "': no such subsection is declared: a subsection of '" +
+                     path.substr(0, path.size() - 1) +
+                     "' must be listed in its entry '" + path +
+                     "Names' (add '" + abridged(name) + "' there)";
             return where + "subsection '" + path + abridged(name) +
                    "': no such subsection is declared";
           }
@@ -499,6 +699,30 @@ namespace rubberdyn
       }
 
       /**
+       * The subsection paths ("Parts/") of @p tree that declare a `Names`
+       * entry: their subsections are the names listed there.
+       */
+      std::set<std::string>
+      paths_with_names_entry(const boost::property_tree::ptree &tree,
+                             const std::string                 &path)
+      {
+        std::set<std::string> result;
+        for (const auto &child : tree)
+          if (!child.second.get_optional<std::string>("value"))
+            {
+              const std::set<std::string> below =
+                paths_with_names_entry(child.second,
+                                       path + demangle(child.first) + '/');
+              result.insert(below.begin(), below.end());
+            }
+          else if (demangle(child.first) == "Names")
+            result.insert(path);
+        return result;
+      }
+
+
+
+      /**
        * Refuse a value of a floating-point entry that the pattern lets
        * through but no computation can use: NaN and infinity (which
        * deal.II's Patterns::Double accepts when written as "nan" or
@@ -507,7 +731,7 @@ namespace rubberdyn
        * subsection path of @p tree ("A/B/").
        */
       void
-      check_floating_point_values(const std::string                 &filename,
+      check_floating_point_values(const ExpandedText                &expanded,
                                   const FileLines                   &file,
                                   const boost::property_tree::ptree &tree,
                                   const std::string                 &path)
@@ -517,7 +741,7 @@ namespace rubberdyn
             const auto value = child.second.get_optional<std::string>("value");
             if (!value)
               {
-                check_floating_point_values(filename,
+                check_floating_point_values(expanded,
                                             file,
                                             child.second,
                                             path + demangle(child.first) + '/');
@@ -536,8 +760,9 @@ namespace rubberdyn
             const std::string  name = path + demangle(child.first);
             const unsigned int line = file.line_setting(name);
             throw InputError(
-              filename,
-              (line > 0 ? "line " + std::to_string(line) + ", " :
+              expanded.file_of(line),
+              (line > 0 ? "line " + std::to_string(expanded.line_in_file(line)) +
+                            ", " :
                           std::string()) +
                 "entry '" + name + "': the value '" + abridged(*value) +
                 "' is not allowed: " +
@@ -621,41 +846,27 @@ namespace rubberdyn
     read_parameter_file(dealii::ParameterHandler &prm,
                         const std::string        &filename)
     {
-      std::ifstream in(filename, std::ios::binary);
-      if (!in)
-        throw InputError(filename, "cannot open the parameter file");
-      // An ifstream opens a directory and reads nothing from it, which
-      // would run the default study.
-      if (std::filesystem::is_directory(filename))
-        throw InputError(filename, "is a directory, not a parameter file");
-      std::string text;
-      {
-        std::ostringstream buffer;
-        buffer << in.rdbuf();
-        text = buffer.str();
-      }
-      if (text.size() > max_file_size)
-        throw InputError(filename,
-                         "the file is larger than " +
-                           std::to_string(max_file_size) +
-                           " bytes; is it a parameter file?");
-      const FileLines file(text);
-      check_line_lengths(filename, text, file);
-      refuse_include_lines(filename, text, file);
+      const ExpandedText expanded(filename);
+      const FileLines    file(expanded.text);
 
-      std::istringstream stream(text);
+      std::istringstream stream(expanded.text);
       try
         {
           prm.parse_input(stream, filename, "", false);
         }
       catch (const dealii::ExceptionBase &exception)
         {
-          throw InputError(filename,
-                           parse_error_message(filename,
-                                               file,
-                                               message_of(exception)));
+          std::string       where = filename;
+          const std::string message =
+            parse_error_message(filename,
+                                file,
+                                expanded,
+                                message_of(exception),
+                                paths_with_names_entry(parameter_tree(prm), ""),
+                                where);
+          throw InputError(where, message);
         }
-      check_floating_point_values(filename, file, parameter_tree(prm), "");
+      check_floating_point_values(expanded, file, parameter_tree(prm), "");
     }
 
 
@@ -679,9 +890,19 @@ namespace rubberdyn
     read_listed_names(const std::string &filename)
     {
       std::map<std::string, std::vector<std::string>> result;
-      std::ifstream file(filename);
-      if (!file)
-        return result;
+      // The file with what it includes. A file that cannot be read (or an
+      // include that cannot) gives no names: read_parameter_file() then
+      // reports it, naming the file and the chain.
+      std::string text;
+      try
+        {
+          text = ExpandedText(filename).text;
+        }
+      catch (const InputError &)
+        {
+          return result;
+        }
+      std::istringstream       file(text);
       std::vector<std::string> path;
       std::string              line, logical;
       while (std::getline(file, line))
@@ -738,6 +959,51 @@ namespace rubberdyn
             }
         }
       return result;
+    }
+
+
+
+    namespace
+    {
+      void
+      collect_changed_entries(const boost::property_tree::ptree &tree,
+                              const std::string                 &path,
+                              std::vector<std::string>          &changed)
+      {
+        for (const auto &child : tree)
+          {
+            const auto value = child.second.get_optional<std::string>("value");
+            if (!value)
+              collect_changed_entries(child.second,
+                                      path + demangle(child.first) + '/',
+                                      changed);
+            else if (*value != child.second.get<std::string>("default_value",
+                                                             *value))
+              changed.push_back(path + demangle(child.first));
+          }
+      }
+    } // namespace
+
+
+
+    std::vector<std::string>
+    entries_changed_from_default(const dealii::ParameterHandler &prm)
+    {
+      std::vector<std::string> changed;
+      collect_changed_entries(parameter_tree(prm), "", changed);
+      return changed;
+    }
+
+
+
+    std::vector<std::string>
+    subsection_names(const dealii::ParameterHandler &prm)
+    {
+      std::vector<std::string> names;
+      for (const auto &child : parameter_tree(prm))
+        if (!child.second.get_optional<std::string>("value"))
+          names.push_back(demangle(child.first));
+      return names;
     }
 
 

@@ -100,7 +100,7 @@ namespace rubberdyn
           if (part.rigid)
             continue;
           const Part *&first =
-            part.formulation == elements::Formulation::mixed_up ? mixed : other;
+            part.formulation == Formulation::mixed_up ? mixed : other;
           if (first == nullptr)
             first = &part;
         }

@@ -13,6 +13,28 @@ namespace rubberdyn
   {
     using namespace dealii;
 
+    std::string
+    field_output_format_names()
+    {
+      return "vtu|hdf5";
+    }
+
+
+
+    FieldOutputFormat
+    parse_field_output_format(const std::string &name)
+    {
+      if (name == "vtu")
+        return FieldOutputFormat::vtu;
+      if (name == "hdf5")
+        return FieldOutputFormat::hdf5;
+      throw std::invalid_argument("unknown field output format '" + name +
+                                  "' (valid: " + field_output_format_names() +
+                                  ")");
+    }
+
+
+
     void
     Output::declare_parameters(ParameterHandler &prm)
     {
@@ -33,7 +55,7 @@ namespace rubberdyn
       prm.declare_entry(
         "Field output format",
         "vtu",
-        Patterns::Selection(postprocess::FieldOutput::format_names()),
+        Patterns::Selection(field_output_format_names()),
         "'vtu': per output time a solution_NNNN.pvtu with one .vtu per rank, "
         "indexed by solution.pvd. 'hdf5' (for large runs): per output time "
         "one solution_NNNN.h5 written by all ranks in parallel (MPI-IO), "
@@ -248,7 +270,7 @@ namespace rubberdyn
       directory             = prm.get("Output directory");
       field_output_interval = prm.get_double("Field output interval");
       field_output_format =
-        postprocess::FieldOutput::parse_format(prm.get("Field output format"));
+        parse_field_output_format(prm.get("Field output format"));
       history_output_interval = prm.get_double("History output interval");
       echo_history            = prm.get_bool("Echo time history");
       progress_interval       = prm.get_double("Progress interval");

@@ -15,27 +15,6 @@ namespace rubberdyn
 {
   namespace postprocess
   {
-    std::string
-    FieldOutput::format_names()
-    {
-      return "vtu|hdf5";
-    }
-
-
-
-    FieldOutput::Format
-    FieldOutput::parse_format(const std::string &name)
-    {
-      if (name == "vtu")
-        return Format::vtu;
-      if (name == "hdf5")
-        return Format::hdf5;
-      throw std::invalid_argument("unknown field output format '" + name +
-                                  "' (valid: " + format_names() + ")");
-    }
-
-
-
     FieldOutput::FieldOutput(const std::string &directory,
                              const std::string &basename,
                              const MPI_Comm     comm,

@@ -4,7 +4,7 @@
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/geometry/standing_cylinder.h>
 #include <rubberdyn/materials/material_registry.h>
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/drop_test_monitor.h>
 #include <rubberdyn/postprocess/history_columns.h>
@@ -112,7 +112,7 @@ namespace rubberdyn
     {
       using parameter_tools::require_positive;
       Parameters &p      = *parameters;
-      p.model_parameters = model::ExplicitSimulation::model_parameters_text(prm);
+      p.model_parameters = simulation::ExplicitSimulation::model_parameters_text(prm);
       prm.enter_subsection("Drop test");
       p.impactor_mass      = prm.get_double("Impactor mass");
       p.impact_velocity    = prm.get_double("Impact velocity");
@@ -164,8 +164,8 @@ namespace rubberdyn
       rubber.name         = "Rubber";
       rubber.material_ids = {0};
       rubber.law          = std::move(p.rubber);
-      rubber.formulation  = p.fbar ? elements::Formulation::fbar :
-                                     elements::Formulation::displacement;
+      rubber.formulation  = p.fbar ? model::Formulation::fbar :
+                                     model::Formulation::displacement;
       model.parts.push_back(std::move(rubber));
 
       // The fixed bottom plate and the impactor, a plate of mass M free
@@ -206,7 +206,7 @@ namespace rubberdyn
     {
       model::Model model(MPI_COMM_WORLD);
       build_model(model);
-      model::ExplicitSimulation simulation(model, parameters->time_integration,
+      simulation::ExplicitSimulation simulation(model, parameters->time_integration,
                                            parameters->output, "Drop test",
                                            parameters->model_parameters);
       simulation.check(log);
@@ -220,7 +220,7 @@ namespace rubberdyn
       const Parameters &p = *parameters;
       model::Model      model(MPI_COMM_WORLD);
       build_model(model);
-      model::ExplicitSimulation simulation(model, p.time_integration, p.output,
+      simulation::ExplicitSimulation simulation(model, p.time_integration, p.output,
                                            "Drop test", p.model_parameters);
       simulation.add_postprocessor(
         std::make_unique<postprocess::EnergyColumns>(false));

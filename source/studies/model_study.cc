@@ -5,12 +5,13 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/io/gmsh_mesh.h>
 #include <rubberdyn/materials/elastic.h>
 #include <rubberdyn/materials/material_registry.h>
-#include <rubberdyn/model/explicit_simulation.h>
-#include <rubberdyn/model/preloaded_simulation.h>
-#include <rubberdyn/model/quasi_static_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
+#include <rubberdyn/simulation/preloaded_simulation.h>
+#include <rubberdyn/simulation/quasi_static_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/studies/model_study.h>
@@ -261,7 +262,7 @@ namespace rubberdyn
           throw InputError(path + "/Part",
                            "the part '" + part + "' is rigid: a " + kind +
                              " cuts a deformable part");
-        if (cut_part.formulation == elements::Formulation::mixed_up)
+        if (cut_part.formulation == model::Formulation::mixed_up)
           throw InputError(path + "/Part",
                            "the part '" + part +
                              "' uses the mixed u-p element, which takes no " +
@@ -722,7 +723,7 @@ namespace rubberdyn
     {
       using parameter_tools::require_positive;
       const std::string model_parameters =
-        model::ExplicitSimulation::model_parameters_text(prm);
+        simulation::ExplicitSimulation::model_parameters_text(prm);
       parameters::TimeIntegration time_integration;
       parameters::Contact         contact;
       parameters::Output          output;
@@ -806,10 +807,10 @@ namespace rubberdyn
           const bool        rigid       = prm.get("Model") == "Rigid";
           const std::string formulation = prm.get("Element formulation");
           part.formulation =
-            formulation == "F-bar"        ? elements::Formulation::fbar :
-            formulation == "displacement" ? elements::Formulation::displacement :
-                                            elements::Formulation::mixed_up;
-          if (part.formulation == elements::Formulation::mixed_up &&
+            formulation == "F-bar"        ? model::Formulation::fbar :
+            formulation == "displacement" ? model::Formulation::displacement :
+                                            model::Formulation::mixed_up;
+          if (part.formulation == model::Formulation::mixed_up &&
               time_integration.scheme != "quasi-static")
             throw InputError(path + "/Element formulation",
                              "'mixed u-p' (part '" + name +
@@ -828,7 +829,7 @@ namespace rubberdyn
                                    "' is not a number from 0 to 1 (empty: " +
                                    elements::model_fbar_stabilization_entry +
                                    ")");
-              if (rigid || part.formulation != elements::Formulation::fbar)
+              if (rigid || part.formulation != model::Formulation::fbar)
                 throw InputError(entry,
                                  "is for deformable parts of Element "
                                  "formulation = F-bar only; part '" +
@@ -977,10 +978,10 @@ namespace rubberdyn
           const std::string shape = prm.get("Shape");
           definition.surface.shape =
             shape == "plane" ?
-              contact::RigidSurface::Shape::plane :
+              model::RigidSurface::Shape::plane :
               shape == "cylinder with the solid outside" ?
-              contact::RigidSurface::Shape::cylinder_solid_outside :
-              contact::RigidSurface::Shape::cylinder_solid_inside;
+              model::RigidSurface::Shape::cylinder_solid_outside :
+              model::RigidSurface::Shape::cylinder_solid_inside;
           definition.surface.point =
             Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
           const Tensor<1, 3> direction =
@@ -989,7 +990,7 @@ namespace rubberdyn
             throw InputError(path + "/Direction", "must not be zero");
           definition.surface.normal = direction / direction.norm();
           definition.surface.radius = prm.get_double("Radius");
-          if (definition.surface.shape != contact::RigidSurface::Shape::plane)
+          if (definition.surface.shape != model::RigidSurface::Shape::plane)
             require_positive(definition.surface.radius, path + "/Radius");
           definition.surface.friction_coefficient =
             prm.get_double("Friction coefficient");
@@ -1095,14 +1096,14 @@ namespace rubberdyn
 
       m.setup();
       if (time_integration.scheme == "quasi-static then explicit")
-        preloaded = std::make_unique<model::PreloadedSimulation>(
+        preloaded = std::make_unique<simulation::PreloadedSimulation>(
           m, time_integration, output, "Model", model_parameters);
       else if (time_integration.scheme == "quasi-static")
-        quasi_static = std::make_unique<model::QuasiStaticSimulation>(
+        quasi_static = std::make_unique<simulation::QuasiStaticSimulation>(
           m, time_integration, output, "Model");
       else
         {
-          simulation = std::make_unique<model::ExplicitSimulation>(
+          simulation = std::make_unique<simulation::ExplicitSimulation>(
             m, time_integration, output, "Model", model_parameters);
           simulation->add_standard_postprocessors();
         }
@@ -1146,7 +1147,8 @@ namespace rubberdyn
         "Model",
         "any multi-part solid model from a Gmsh mesh: parts, boundary "
         "conditions and rigid surfaces named in the parameter file "
-        "(explicit dynamics; see doc/model.md)",
+        "(explicit, quasi-static, or quasi-static then explicit: 'Time "
+        "integration/Scheme'; see doc/model.md)",
         &ModelStudy::declare_parameters,
         [](ParameterHandler &prm, const std::string &parameter_file)
           -> std::unique_ptr<Study> {

@@ -167,6 +167,23 @@ namespace rubberdyn
                                  "FS = " +
                                  prm.get("Static friction coefficient") +
                                  ": friction decays from FS to FD");
+            // A Coulomb pair with FS = 0 would run frictionless without a
+            // word: the coefficient is what the user forgot.
+            if (pair.type == Definition::Type::coulomb &&
+                pair.static_friction == 0.)
+              throw InputError(path + "/Static friction coefficient",
+                               "is 0 (the default) in a pair of Type = "
+                               "Coulomb, which would then have no friction: "
+                               "set the friction coefficient here (and "
+                               "'Dynamic friction coefficient' if it decays), "
+                               "or set Type = frictionless");
+            if (pair.type != Definition::Type::coulomb &&
+                pair.static_friction > 0.)
+              throw InputError(path + "/Static friction coefficient",
+                               "is " + prm.get("Static friction coefficient") +
+                                 " in a pair of Type = " + type +
+                                 ", which has no friction: set Type = Coulomb "
+                                 "to use it, or remove the entry");
             pair.decay         = non_negative("Decay coefficient", "");
             pair.penalty_scale = prm.get_double("Penalty scale");
             parameter_tools::require_positive(pair.penalty_scale,

@@ -2,11 +2,13 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/registry.h>
+#include <rubberdyn/io/parameter_file.h>
 #include <rubberdyn/parameters/contact_parameters.h>
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/studies/study.h>
 
+#include <algorithm>
 #include <ostream>
 
 #include <map>
@@ -79,6 +81,59 @@ namespace rubberdyn
 
 
 
+      void
+      refuse_entries_of_other_studies(const dealii::ParameterHandler &prm,
+                                      const std::string              &chosen)
+      {
+        // Which studies declare each top-level subsection (the shared
+        // groups, declared by the registry itself, belong to none).
+        // (A study may add entries to a shared group: the group stays
+        // shared.)
+        dealii::ParameterHandler shared;
+        parameters::TimeIntegration::declare_parameters(shared);
+        parameters::Contact::declare_parameters(shared);
+        parameters::Output::declare_parameters(shared);
+        const std::vector<std::string> shared_groups =
+          io::subsection_names(shared);
+        std::map<std::string, std::vector<std::string>> studies_of;
+        studies().for_each([&](const std::string &study, const Entry &entry) {
+          dealii::ParameterHandler scratch;
+          entry.declare(scratch, {});
+          for (const std::string &subsection : io::subsection_names(scratch))
+            if (std::find(shared_groups.begin(),
+                          shared_groups.end(),
+                          subsection) == shared_groups.end())
+              studies_of[subsection].push_back(study);
+        });
+        for (const std::string &path : io::entries_changed_from_default(prm))
+          {
+            const std::size_t slash = path.find('/');
+            if (slash == std::string::npos)
+              continue;
+            const auto owners = studies_of.find(path.substr(0, slash));
+            if (owners == studies_of.end() ||
+                std::find(owners->second.begin(),
+                          owners->second.end(),
+                          chosen) != owners->second.end())
+              continue;
+            std::string listed;
+            for (const std::string &study : owners->second)
+              listed += (listed.empty() ? "'" : "' or '") + study;
+            throw InputError(
+              path,
+              "this entry belongs to the " + listed + "' study, but the "
+                "study is '" + chosen + "'" +
+                (prm.get("Study") == "Drop test" ?
+                   " (the default: is 'set Study = " + owners->second[0] +
+                     "' missing?)" :
+                   std::string()) +
+                "; set Study to the study the file describes, or remove the "
+                "entry");
+          }
+      }
+
+
+
       std::unique_ptr<Study>
       create(dealii::ParameterHandler &prm, const std::string &parameter_file)
       {
@@ -95,6 +150,7 @@ namespace rubberdyn
           throw InputError("Output/Output directory",
                            "must not be empty (use '.' for the working "
                            "directory)");
+        refuse_entries_of_other_studies(prm, name);
         return entry->create(prm, parameter_file);
       }
     } // namespace registry

@@ -96,7 +96,7 @@ head -c 400 error.txt; echo
 # 5. Checkpoints of the explicit run after the preload: the restart of 3.
 #    to 0.12 ms with Checkpoint interval = 0.04 ms, once uninterrupted
 #    (full/) and once killed at 0.1 ms (part/, SIGKILL from inside,
-#    RUBBERDYN_SIMULATE_CRASH_AT) and restarted: the restart continues from
+#    --simulate-crash-at) and restarted: the restart continues from
 #    the explicit run's checkpoint at 0.08 ms, not from the preload (the log
 #    says so and no row is written twice), and part/time_history.csv is
 #    full/'s byte for byte: the upper plate moving at 0.1 mm/ms keeps the

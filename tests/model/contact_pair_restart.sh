@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A Coulomb mortar pair survives a crash: the sliding rubber block of
 # parameter_files/block_sliding_on_plate.prm checkpointed every 1.3 ms,
-# killed (SIGKILL from inside, RUBBERDYN_SIMULATE_CRASH_AT,
+# killed (SIGKILL from inside, --simulate-crash-at,
 # doc/restarts.md) at 3.0 ms, while it slides, and restarted from the
 # checkpoint at 2.6 ms: time_history.csv, with the pair's forces,
 # pressures, active and slipping nodes and friction work, is byte for byte

@@ -1,5 +1,5 @@
 // The message of an F-bar hull collapse names the part that collapsed
-// (model::setup::element_groups()): in a model of several deformable parts
+// (simulation::setup::element_groups()): in a model of several deformable parts
 // the user must know which part's `Parts/<name>/F-bar stabilization` to
 // raise, or that the model-wide `Time integration/F-bar stabilization`
 // covers them all.
@@ -33,7 +33,7 @@
 
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/simulation/simulation_setup.h>
 
 #include <string>
 
@@ -77,7 +77,7 @@ namespace
     elements::SolidHexElements hexes;
     hexes.initialize(model.dof_handler,
                      model.partitioner,
-                     model::setup::element_groups(model),
+                     simulation::setup::element_groups(model),
                      elements::ElementSettings());
     const std::vector<double>   no_scaling(model.triangulation.n_active_cells(),
                                          1.);

@@ -44,7 +44,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -156,7 +156,7 @@ main(int argc, char **argv)
   output.directory               = "bonded_block";
   output.field_output_interval   = 0.;
   output.history_output_interval = 0.02;
-  model::ExplicitSimulation simulation(model,
+  simulation::ExplicitSimulation simulation(model,
                                        time_integration,
                                        output,
                                        "Bonded block",

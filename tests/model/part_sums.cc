@@ -60,7 +60,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -175,7 +175,7 @@ namespace
     output.directory               = "bonded_block";
     output.field_output_interval   = 0.;
     output.history_output_interval = 0.02;
-    model::ExplicitSimulation simulation(model,
+    simulation::ExplicitSimulation simulation(model,
                                          time_integration,
                                          output,
                                          "Bonded block",
@@ -286,7 +286,7 @@ namespace
     output.directory               = "free_flight";
     output.field_output_interval   = 0.;
     output.history_output_interval = 0.05;
-    model::ExplicitSimulation simulation(model,
+    simulation::ExplicitSimulation simulation(model,
                                          time_integration,
                                          output,
                                          "Free flight",

@@ -11,7 +11,7 @@
 //   u_x = a s(t),  u_z = (-b + c (X - 10)) s(t),  s = (1 - cos(pi t / T)) / 2
 // for t < T, s = 1 after, with a = 1.5 mm, b = 0.5 mm, c = 0.03, T = 1 ms
 // (moment point q_t = (10, 10, 10)), run to 1.2 ms. Built as a
-// model::Model here and run by model::ExplicitSimulation, with a
+// model::Model here and run by simulation::ExplicitSimulation, with a
 // postprocessor plugin that records every step.
 //
 // The identities. The solver (time_integration/explicit_solver.h) takes,
@@ -60,7 +60,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <rubberdyn/io/gmsh_mesh.h>
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -287,7 +287,7 @@ namespace
     output.directory               = "output_" + title;
     output.field_output_interval   = 0.;
     output.history_output_interval = 0.1;
-    model::ExplicitSimulation simulation(model,
+    simulation::ExplicitSimulation simulation(model,
                                          time_integration,
                                          output,
                                          "Reaction balance",

@@ -42,7 +42,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -138,7 +138,7 @@ namespace
     output.directory               = directory;
     output.field_output_interval   = 0.;
     output.history_output_interval = 0.1;
-    model::ExplicitSimulation simulation(model, time_integration, output,
+    simulation::ExplicitSimulation simulation(model, time_integration, output,
                                          "Rigid drop", "rigid drop");
     simulation.add_standard_postprocessors();
     auto          plugin   = std::make_unique<BodyRecorder>();
@@ -161,7 +161,7 @@ namespace
     parameters::TimeIntegration time_integration;
     parameters::Output          output;
     output.directory = "unused";
-    model::ExplicitSimulation simulation(model, time_integration, output,
+    simulation::ExplicitSimulation simulation(model, time_integration, output,
                                          "Rigid drop", "rigid drop");
     return simulation.rigid_bodies().back();
   }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A rigid part survives a crash: parameter_files/rigid_drop.prm (a rigid
 # steel block dropped on a rubber block) checkpointed every 1.3 ms, killed
-# (SIGKILL from inside, RUBBERDYN_SIMULATE_CRASH_AT, doc/restarts.md) at
+# (SIGKILL from inside, --simulate-crash-at, doc/restarts.md) at
 # 3.0 ms, in the middle of the impact, and restarted from the checkpoint at
 # 2.6 ms: time_history.csv, with the block's position, velocity, rotation,
 # angular velocity, force and moment, is byte for byte the uninterrupted

@@ -109,14 +109,14 @@ PRM
 
 # crash_and_restart FULL PART RESUME CRASH_AT RESTART_AT: run FULL.prm
 # uninterrupted, PART.prm killed at CRASH_AT ms (SIGKILL from inside,
-# RUBBERDYN_SIMULATE_CRASH_AT, doc/restarts.md) and RESUME.prm (PART's with
+# --simulate-crash-at, doc/restarts.md) and RESUME.prm (PART's with
 # Restart from checkpoint = true), on $nproc ranks through mpirun; fails
 # unless the crash happened and the resumed run restarted from the
 # checkpoint at RESTART_AT ms. Logs FULL.log, PART.log, RESUME.log.
 crash_and_restart() {
   mpirun --oversubscribe -np "$nproc" "$exe" "$1.prm" > "$1.log" 2>&1
-  if RUBBERDYN_SIMULATE_CRASH_AT=$4 mpirun --oversubscribe -np "$nproc" \
-       -x RUBBERDYN_SIMULATE_CRASH_AT "$exe" "$2.prm" > "$2.log" 2>&1; then
+  if mpirun --oversubscribe -np "$nproc" \
+       "$exe" --simulate-crash-at "$4" "$2.prm" > "$2.log" 2>&1; then
     echo "the run was to be killed at $4 ms"; cat "$2.log"; return 1
   fi
   mpirun --oversubscribe -np "$nproc" "$exe" "$3.prm" > "$3.log" 2>&1

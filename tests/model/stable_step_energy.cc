@@ -50,7 +50,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -234,7 +234,7 @@ main(int argc, char **argv)
       output.directory               = "stable_step_energy";
       output.field_output_interval   = 0.;
       output.history_output_interval = 1e3;
-      model::ExplicitSimulation simulation(model,
+      simulation::ExplicitSimulation simulation(model,
                                            time_integration,
                                            output,
                                            "Stable step energy",

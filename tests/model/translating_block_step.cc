@@ -20,7 +20,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -115,7 +115,7 @@ main(int argc, char **argv)
       output.directory               = "translating_block_step";
       output.field_output_interval   = 0.;
       output.history_output_interval = 1e3;
-      model::ExplicitSimulation simulation(model,
+      simulation::ExplicitSimulation simulation(model,
                                            time_integration,
                                            output,
                                            "Translating block",

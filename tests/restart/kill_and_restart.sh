@@ -63,14 +63,14 @@ write_prm resume part true
 run() { mpirun --oversubscribe -np 2 "$exe" "$1.prm" > "$1.log" 2>&1; }
 
 # Run $1.prm until the first step at or after $2 ms, where every rank kills
-# itself with SIGKILL (RUBBERDYN_SIMULATE_CRASH_AT, doc/restarts.md): a
+# itself with SIGKILL (--simulate-crash-at, doc/restarts.md): a
 # machine that dies between two checkpoints with rows still in the stream
 # buffers, at a known moment (killing the run from outside raced with the
 # run on a loaded machine). The last committed checkpoint must be the one
 # at $3 ms.
 run_and_kill() {
-  if RUBBERDYN_SIMULATE_CRASH_AT=$2 mpirun --oversubscribe -np 2 \
-       -x RUBBERDYN_SIMULATE_CRASH_AT "$exe" "$1.prm" > "$1.killed.log" 2>&1; then
+  if mpirun --oversubscribe -np 2 \
+       "$exe" --simulate-crash-at "$2" "$1.prm" > "$1.killed.log" 2>&1; then
     echo "the run was to be killed at $2 ms but ended normally:"; cat "$1.killed.log"; exit 1
   fi
   local t

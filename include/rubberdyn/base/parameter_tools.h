@@ -72,7 +72,7 @@ namespace rubberdyn
 
     /**
      * The first line in which two parameter texts (one entry per line, as
-     * model::ExplicitSimulation::model_parameters_text() writes them)
+     * simulation::ExplicitSimulation::model_parameters_text() writes them)
      * differ: {line of @p present, line of @p stored} (empty where one text
      * ends), for a message that names the entry that changed.
      */

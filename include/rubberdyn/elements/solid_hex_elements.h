@@ -8,6 +8,7 @@
 #include <rubberdyn/elements/implicit_elements.h>
 #include <rubberdyn/materials/material_model.h>
 #include <rubberdyn/materials/stress_kernel.h>
+#include <rubberdyn/model/element_formulation.h>
 
 #include <functional>
 #include <limits>
@@ -222,20 +223,9 @@ namespace rubberdyn
       unsigned int n_cut = 0;
     };
 
-    /** Formulation of the solid element. */
-    enum class Formulation
-    {
-      /** Plain displacement element, 2x2x2 Gauss points (locks). */
-      displacement,
-      /** F-bar: volumetric part of F taken at the element centre. */
-      fbar,
-      /**
-       * Mixed u-p: triquadratic displacement with a condensed P1 pressure
-       * and dilatation per cell (MixedUPElements; quasi-static only, on an
-       * FE_Q(2) dof handler). SolidHexElements refuses it.
-       */
-      mixed_up
-    };
+    /* The element formulation is chosen per part in the Model
+       (model/element_formulation.h). */
+    using model::Formulation;
 
     /** The input entry of the model-wide beta of the F-bar stabilisation
      * (ElementSettings::fbar_stabilization), named in messages. */

@@ -20,10 +20,17 @@ namespace rubberdyn
   {
     /**
      * Read @p filename into @p prm (whose entries are all declared).
+     * `include FILE` lines are followed: the named file's lines take the
+     * include line's place (in its subsection); a relative FILE is relative
+     * to the file that has the line; at most 8 levels; a cycle is refused
+     * with the chain named; every file under the same limits on size and
+     * line length as the file given.
      *
      * @throws InputError naming the file, the line and the entry, in one
      *   readable sentence, if the file is missing or unreadable, an entry is
-     *   unknown, or a value does not match its pattern (type or range).
+     *   unknown, or a value does not match its pattern (type or range); an
+     *   error in an included file names the chain of files and lines that
+     *   reached it ("a.prm, line 2 -> base.prm: line 7, entry ...").
      */
     void
     read_parameter_file(dealii::ParameterHandler &prm,
@@ -42,6 +49,17 @@ namespace rubberdyn
      */
     std::map<std::string, std::vector<std::string>>
     read_listed_names(const std::string &filename);
+
+    /**
+     * The full paths ("A/B/Name") of the entries of @p prm whose value is
+     * not their default, in declaration order.
+     */
+    std::vector<std::string>
+    entries_changed_from_default(const dealii::ParameterHandler &prm);
+
+    /** The names of the top-level subsections declared in @p prm. */
+    std::vector<std::string>
+    subsection_names(const dealii::ParameterHandler &prm);
 
     /**
      * Write every declared parameter of @p prm as a valid .prm file: each

@@ -9,10 +9,10 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 
-#include <rubberdyn/contact/rigid_surface_contact.h>
-#include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/model/element_formulation.h>
 #include <rubberdyn/model/rigid_body.h>
+#include <rubberdyn/model/rigid_surface.h>
 
 #include <functional>
 #include <memory>
@@ -29,7 +29,7 @@ namespace rubberdyn
    * per set of material ids), the boundary conditions, the rigid surfaces
    * with their bodies and the gravity. Studies only build a Model (from a
    * Gmsh file and a .prm, or from a generator such as the drop test's);
-   * model::ExplicitSimulation runs any Model.
+   * simulation::ExplicitSimulation runs any Model.
    */
   namespace model
   {
@@ -45,7 +45,7 @@ namespace rubberdyn
       /** The constitutive law. */
       std::unique_ptr<materials::MaterialModel<3>> law;
       /** Element formulation. */
-      elements::Formulation formulation = elements::Formulation::fbar;
+      Formulation formulation = Formulation::fbar;
       /**
        * F-bar only: the part's own beta of the volumetric stabilisation
        * (-, `Parts/<name>/F-bar stabilization`); empty: the model's
@@ -131,7 +131,7 @@ namespace rubberdyn
       /** Name (the columns `<name>_position_x` etc.). */
       std::string name;
       /** Shape, position, friction coefficient. */
-      contact::RigidSurface surface;
+      RigidSurface surface;
       /**
        * The body that carries it (mass, free directions, velocity); unused
        * if the surface is carried by a rigid part.

@@ -1,7 +1,7 @@
 #ifndef rubberdyn_parameters_output_parameters_h
 #define rubberdyn_parameters_output_parameters_h
 
-#include <rubberdyn/postprocess/field_output.h>
+#include <rubberdyn/parameters/field_output_format.h>
 
 #include <array>
 #include <string>
@@ -28,8 +28,7 @@ namespace rubberdyn
       /** Time between ParaView outputs (ms); 0: none. */
       double field_output_interval = 1.;
       /** vtu or hdf5. */
-      postprocess::FieldOutput::Format field_output_format =
-        postprocess::FieldOutput::Format::vtu;
+      FieldOutputFormat field_output_format = FieldOutputFormat::vtu;
       /** Time between rows of time_history.csv (ms); 0: every step. */
       double history_output_interval = 0.05;
       /** Print every history row to the log too. */

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rubberdyn/base/vector.h>
+#include <rubberdyn/parameters/field_output_format.h>
 
 #include <cstdint>
 #include <array>
@@ -82,29 +83,8 @@ namespace rubberdyn
     class FieldOutput
     {
     public:
-      /**
-       * The file format.
-       */
-      enum class Format
-      {
-        /** A `.pvtu` per output time and a `.pvd` index. */
-        vtu,
-        /** An `.h5` per output time and an `.xdmf` index. */
-        hdf5
-      };
-
-      /**
-       * The format names accepted by parse_format(), as a pattern for a
-       * Patterns::Selection: "vtu|hdf5".
-       */
-      static std::string
-      format_names();
-
-      /**
-       * The format called @p name ("vtu" or "hdf5").
-       */
-      static Format
-      parse_format(const std::string &name);
+      /** The file format (`Output/Field output format`). */
+      using Format = parameters::FieldOutputFormat;
 
       /**
        * @param directory Output directory (exists).

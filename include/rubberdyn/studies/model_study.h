@@ -10,10 +10,14 @@ namespace rubberdyn
   namespace model
   {
     class Model;
+  } // namespace model
+
+  namespace simulation
+  {
     class ExplicitSimulation;
     class QuasiStaticSimulation;
     class PreloadedSimulation;
-  } // namespace model
+  } // namespace simulation
 
   namespace studies
   {
@@ -26,9 +30,9 @@ namespace rubberdyn
      * functions of x, y, z, t); `Rigid surfaces` are planes and cylinders
      * carried by rigid bodies; `Model/Gravity` acts on everything. The
      * model is built (and every input checked) in the constructor, before
-     * anything is written; run() hands it to model::ExplicitSimulation, or
+     * anything is written; run() hands it to simulation::ExplicitSimulation, or
      * with `Time integration/Scheme = quasi-static` to
-     * model::QuasiStaticSimulation.
+     * simulation::QuasiStaticSimulation.
      *
      * Outputs: time_history.csv with time, time_step, the energies, per
      * boundary condition its reaction force and moment, per part its
@@ -66,9 +70,9 @@ namespace rubberdyn
     private:
       std::unique_ptr<model::Model>              model;
       /** The engine: one of the three, by `Time integration/Scheme`. */
-      std::unique_ptr<model::ExplicitSimulation>    simulation;
-      std::unique_ptr<model::QuasiStaticSimulation> quasi_static;
-      std::unique_ptr<model::PreloadedSimulation>   preloaded;
+      std::unique_ptr<simulation::ExplicitSimulation>    simulation;
+      std::unique_ptr<simulation::QuasiStaticSimulation> quasi_static;
+      std::unique_ptr<simulation::PreloadedSimulation>   preloaded;
     };
   } // namespace studies
 } // namespace rubberdyn

@@ -1,9 +1,9 @@
-#ifndef rubberdyn_model_quasi_static_simulation_h
-#define rubberdyn_model_quasi_static_simulation_h
+#ifndef rubberdyn_simulation_quasi_static_simulation_h
+#define rubberdyn_simulation_quasi_static_simulation_h
 
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
-#include <rubberdyn/model/preload.h>
+#include <rubberdyn/simulation/preload.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
 #include <iosfwd>
@@ -39,6 +39,17 @@ namespace rubberdyn
     class Model;
     class SurfaceLoads;
     class GravityLoad;
+  } // namespace model
+
+  namespace simulation
+  {
+    using namespace dealii;
+    /* The model layer's names, used here unqualified. */
+    using model::Model;
+    using model::SurfaceLoads;
+    using model::GravityLoad;
+    using model::RigidBody;
+
 
     /**
      * The quasi-static engine path (`Time integration/Scheme =
@@ -46,7 +57,7 @@ namespace rubberdyn
      * its boundary-condition functions, t from 0 to `Time integration/
      * Quasi-static end time`, by Newton-Raphson
      * (time_integration::QuasiStaticSolver). It builds the elements and the
-     * kinematic constraints exactly as model::ExplicitSimulation does
+     * kinematic constraints exactly as simulation::ExplicitSimulation does
      * (model::setup), and writes time_history.csv: time, newton_iterations,
      * internal_energy, per part `<part>_internal_energy` and per boundary
      * condition its reaction `<bc>_force_x/_y/_z` (kN) and
@@ -187,7 +198,7 @@ namespace rubberdyn
       std::vector<time_integration::PretensionLoad> pretension_loads;
       std::vector<unsigned int>                     cut_elements;
     };
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn
 
 #endif

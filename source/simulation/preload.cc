@@ -4,7 +4,7 @@
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
-#include <rubberdyn/model/preload.h>
+#include <rubberdyn/simulation/preload.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,8 +13,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     namespace
     {
       // (2: with the contacts' friction states; 3: with the poses of the
@@ -275,5 +277,5 @@ namespace rubberdyn
       state.displacement.update_ghost_values();
       return state;
     }
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn

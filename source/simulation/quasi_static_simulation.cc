@@ -9,8 +9,8 @@
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/gravity_load.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/quasi_static_simulation.h>
-#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/simulation/quasi_static_simulation.h>
+#include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/field_output.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
@@ -28,8 +28,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     void
     QuasiStaticSimulation::check_supported(
       const Model                       &model,
@@ -716,5 +718,5 @@ namespace rubberdyn
           log << std::endl;
         }
     }
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn

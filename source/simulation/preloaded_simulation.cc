@@ -2,11 +2,11 @@
 
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/preload.h>
-#include <rubberdyn/model/preloaded_simulation.h>
-#include <rubberdyn/model/quasi_static_simulation.h>
+#include <rubberdyn/simulation/preload.h>
+#include <rubberdyn/simulation/preloaded_simulation.h>
+#include <rubberdyn/simulation/quasi_static_simulation.h>
 
 #include <cmath>
 #include <ostream>
@@ -14,8 +14,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     namespace
     {
       /** Whether @p directory holds a complete checkpoint of an explicit run
@@ -171,5 +173,5 @@ namespace rubberdyn
       explicit_run->start_from(state);
       explicit_run->run(log);
     }
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn

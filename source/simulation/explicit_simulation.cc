@@ -7,12 +7,14 @@
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
-#include <rubberdyn/model/explicit_simulation.h>
-#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
+#include <rubberdyn/simulation/simulation_setup.h>
+#include <rubberdyn/model/rigid_part_mass.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/postprocess/history_nodes.h>
+#include <rubberdyn/postprocess/interaction_columns.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -28,8 +30,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     using time_integration::KinematicConstraints;
 
     std::string
@@ -71,54 +75,6 @@ namespace rubberdyn
     namespace
     {
       constexpr const char *component_names[3] = {"x", "y", "z"};
-
-      /**
-       * The lumped mass of the rigid parts' cells (their elements compute
-       * nothing, so they give no mass of their own): the row sums
-       * rho N_a of setup::part_masses().
-       */
-      class RigidPartMass : public ForceContribution
-      {
-      public:
-        explicit RigidPartMass(VectorType lumped_mass)
-          : lumped_mass(std::move(lumped_mass))
-        {}
-
-        std::string
-        name() const override
-        {
-          return "rigid-part mass";
-        }
-
-        Accumulation
-        accumulation() const override
-        {
-          return Accumulation::external_owned;
-        }
-
-        /** A rigid part's forces are its body's (ExplicitSolver). */
-        void
-        add_forces(const EvaluationPoint &,
-                   VectorType &,
-                   ContributionResults &) override
-        {}
-
-        void
-        add_lumped_mass(VectorType &mass,
-                        VectorType &physical_mass) const override
-        {
-          // Owned entries (the ghosts are added by the owner, and the
-          // solver compresses with add).
-          for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
-            {
-              mass.local_element(i) += lumped_mass.local_element(i);
-              physical_mass.local_element(i) += lumped_mass.local_element(i);
-            }
-        }
-
-      private:
-        VectorType lumped_mass;
-      };
 
       /**
        * The owned nodes of part @p p (its cells' vertices whose dofs this
@@ -229,144 +185,6 @@ namespace rubberdyn
             body.inertia[i][j] = values[3 * i + j];
       }
 
-      /**
-       * The reaction columns of every boundary condition
-       * (postprocess::BoundaryReactionColumns: six per condition, force
-       * then moment) with, in those of a pressure or traction condition,
-       * the load's resultant force and moment on the body
-       * (SurfaceLoads::resultants(), summed over the ranks at output times
-       * only).
-       */
-      class ReactionAndLoadColumns : public postprocess::Postprocessor
-      {
-      public:
-        ReactionAndLoadColumns(
-          std::unique_ptr<postprocess::BoundaryReactionColumns> reactions,
-          const SurfaceLoads *                                  loads,
-          const std::vector<unsigned int> &condition_of_load)
-          : reactions(std::move(reactions))
-          , loads(loads)
-          , condition_of_load(condition_of_load)
-        {}
-
-        std::string
-        name() const override
-        {
-          return reactions->name();
-        }
-
-        std::vector<std::string>
-        history_columns() const override
-        {
-          return reactions->history_columns();
-        }
-
-        void
-        history_values(const postprocess::SimulationView &view,
-                       std::vector<double> &              values) override
-        {
-          const std::size_t first = values.size();
-          reactions->history_values(view, values);
-          if (loads == nullptr)
-            return;
-          // A load condition has no constraint group: its columns are
-          // zero and take the resultant.
-          const std::vector<SurfaceLoads::Resultant> resultants =
-            loads->resultants();
-          for (unsigned int l = 0; l < resultants.size(); ++l)
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                const std::size_t column = first + 6 * condition_of_load[l];
-                values[column + d] += resultants[l].force[d];
-                values[column + 3 + d] += resultants[l].moment[d];
-              }
-        }
-
-      private:
-        std::unique_ptr<postprocess::BoundaryReactionColumns> reactions;
-        const SurfaceLoads *                                  loads;
-        std::vector<unsigned int>                             condition_of_load;
-      };
-      /**
-       * The energy balance per interaction (LS-DYNA's SLEOUT and the
-       * boundary work of GLSTAT): for every boundary condition `<bc>_work`
-       * (J, the work it has done on the body: a kinematic condition's
-       * reactions, a load's forces; the external work is their sum plus
-       * gravity's and the driven rigid bodies'), and for every rigid
-       * surface `<name>_contact_energy` (J, in its penalty springs) and
-       * `<name>_friction_work` (J, dissipated by its friction). Summed over
-       * the ranks at output times only.
-       */
-      class InteractionEnergyColumns : public postprocess::Postprocessor
-      {
-      public:
-        InteractionEnergyColumns(
-          const Model &                                   model,
-          const std::vector<unsigned int> &               condition_of_group,
-          const SurfaceLoads *                            loads,
-          const std::vector<unsigned int> &               condition_of_load,
-          const std::vector<const contact::RigidSurfaceForces *> &surfaces)
-          : model(model)
-          , condition_of_group(condition_of_group)
-          , loads(loads)
-          , condition_of_load(condition_of_load)
-          , surfaces(surfaces)
-        {}
-
-        std::string
-        name() const override
-        {
-          return "interaction energies";
-        }
-
-        std::vector<std::string>
-        history_columns() const override
-        {
-          std::vector<std::string> columns;
-          for (const BoundaryCondition &bc : model.boundary_conditions)
-            columns.push_back(bc.name + "_work");
-          for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
-            {
-              columns.push_back(surface.name + "_contact_energy");
-              columns.push_back(surface.name + "_friction_work");
-            }
-          return columns;
-        }
-
-        void
-        history_values(const postprocess::SimulationView &view,
-                       std::vector<double> &              values) override
-        {
-          std::vector<double> work(model.boundary_conditions.size(), 0.);
-          const std::vector<double> &by_group = view.solver.reaction_works();
-          for (unsigned int g = 0; g < by_group.size(); ++g)
-            work[condition_of_group[g]] += by_group[g];
-          if (loads != nullptr)
-            {
-              const std::vector<double> load_work = loads->works();
-              for (unsigned int l = 0; l < load_work.size(); ++l)
-                work[condition_of_load[l]] += load_work[l];
-            }
-          values.insert(values.end(), work.begin(), work.end());
-          std::vector<double> energies;
-          for (const contact::RigidSurfaceForces *surface : surfaces)
-            {
-              energies.push_back(surface->contact_energy());
-              energies.push_back(surface->friction_work());
-            }
-          Utilities::MPI::sum(ArrayView<const double>(energies),
-                              model.comm,
-                              ArrayView<double>(energies));
-          values.insert(values.end(), energies.begin(), energies.end());
-        }
-
-      private:
-        const Model &                                    model;
-        std::vector<unsigned int>                        condition_of_group;
-        const SurfaceLoads *                             loads;
-        std::vector<unsigned int>                        condition_of_load;
-        std::vector<const contact::RigidSurfaceForces *> surfaces;
-      };
     } // namespace
 
 
@@ -713,7 +531,7 @@ namespace rubberdyn
         contact_state_sizes.push_back(contact->state().size());
       for (const auto &pair : contact_pairs)
         contact_state_sizes.push_back(pair->friction_state().size());
-      return model::read_preload(directory,
+      return simulation::read_preload(directory,
                                  parameters,
                                  model.partitioner,
                                  elements->history().size(),
@@ -739,7 +557,7 @@ namespace rubberdyn
       std::vector<std::string> names;
       for (const BoundaryCondition &bc : model.boundary_conditions)
         names.push_back(bc.name);
-      add_postprocessor(std::make_unique<ReactionAndLoadColumns>(
+      add_postprocessor(std::make_unique<postprocess::ReactionAndLoadColumns>(
         std::make_unique<postprocess::BoundaryReactionColumns>(
           names, condition_of_group, direction_of_group),
         surface_loads.get(),
@@ -754,7 +572,7 @@ namespace rubberdyn
       std::vector<const contact::RigidSurfaceForces *> surfaces;
       for (const auto &surface : contact_forces)
         surfaces.push_back(surface.get());
-      add_postprocessor(std::make_unique<InteractionEnergyColumns>(
+      add_postprocessor(std::make_unique<postprocess::InteractionEnergyColumns>(
         model, condition_of_group, surface_loads.get(), condition_of_load,
         surfaces));
       if (!contact_pairs.empty())
@@ -823,5 +641,5 @@ namespace rubberdyn
             << " kg";
       log << ")" << std::endl;
     }
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn

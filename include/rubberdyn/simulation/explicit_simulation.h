@@ -1,9 +1,9 @@
-#ifndef rubberdyn_model_explicit_simulation_h
-#define rubberdyn_model_explicit_simulation_h
+#ifndef rubberdyn_simulation_explicit_simulation_h
+#define rubberdyn_simulation_explicit_simulation_h
 
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/preload.h>
+#include <rubberdyn/simulation/preload.h>
 #include <rubberdyn/parameters/contact_parameters.h>
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
@@ -42,6 +42,16 @@ namespace rubberdyn
   namespace model
   {
     class SurfaceLoads;
+  } // namespace model
+
+  namespace simulation
+  {
+    using namespace dealii;
+    /* The model layer's names, used here unqualified. */
+    using model::Model;
+    using model::RigidBody;
+    using model::ForceContribution;
+    using model::SurfaceLoads;
 
     /**
      * The one engine path of explicit dynamics: takes any Model and runs
@@ -111,7 +121,7 @@ namespace rubberdyn
 
       /**
        * Read the preload checkpoint in @p directory for this model
-       * (model::read_preload() with the elements' sizes).
+       * (simulation::read_preload() with the elements' sizes).
        */
       PreloadState
       read_preload(const std::string &directory,
@@ -265,7 +275,7 @@ namespace rubberdyn
       unsigned long checkpoint_step = 0;
       double        checkpoint_time = 0.;
     };
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn
 
 #endif

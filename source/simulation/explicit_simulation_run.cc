@@ -1,4 +1,4 @@
-// The run loop, output and checkpoints of model::ExplicitSimulation (the
+// The run loop, output and checkpoints of simulation::ExplicitSimulation (the
 // set-up is in explicit_simulation.cc).
 #include <deal.II/base/mpi.h>
 
@@ -6,9 +6,10 @@
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/base/run_options.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
-#include <rubberdyn/model/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -31,8 +32,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     namespace
     {
       /** Thrown by the monitor when a postprocessor asks to stop. */
@@ -40,28 +43,6 @@ namespace rubberdyn
       {};
 
       constexpr char rank_file_magic[8] = "RDYNRK2";
-
-      /**
-       * The time (ms) at which every rank kills itself with SIGKILL, read
-       * from the environment variable RUBBERDYN_SIMULATE_CRASH_AT, or +inf.
-       * A testing aid (doc/restarts.md): a machine that dies at a known
-       * moment, between checkpoints, with rows still in the stream buffers,
-       * without the race of killing the run from outside.
-       */
-      double
-      simulated_crash_time()
-      {
-        const char *value = std::getenv("RUBBERDYN_SIMULATE_CRASH_AT");
-        if (value == nullptr || *value == '\0')
-          return std::numeric_limits<double>::infinity();
-        char        *end  = nullptr;
-        const double time = std::strtod(value, &end);
-        AssertThrow(end != value && *end == '\0' && time >= 0.,
-                    ExcMessage("RUBBERDYN_SIMULATE_CRASH_AT must be a time in "
-                               "ms, not '" +
-                               std::string(value) + "'"));
-        return time;
-      }
 
       using durable_files::sync_directory;
       using durable_files::throw_if_any;
@@ -504,7 +485,8 @@ namespace rubberdyn
           log << row;
         last_row_time = s.time();
       };
-      const double crash_time = simulated_crash_time();
+      // --simulate-crash-at (RunOptions): a testing aid, doc/restarts.md.
+      const double crash_time = run_options().simulate_crash_at;
       const auto   monitor    = [&]() {
         const double t = s.time();
         if (t >= crash_time)
@@ -681,5 +663,5 @@ namespace rubberdyn
                 << std::endl;
         }
     }
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn

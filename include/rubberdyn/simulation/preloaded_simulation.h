@@ -1,5 +1,5 @@
-#ifndef rubberdyn_model_preloaded_simulation_h
-#define rubberdyn_model_preloaded_simulation_h
+#ifndef rubberdyn_simulation_preloaded_simulation_h
+#define rubberdyn_simulation_preloaded_simulation_h
 
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
@@ -13,16 +13,24 @@ namespace rubberdyn
   namespace model
   {
     class Model;
+  } // namespace model
+
+  namespace simulation
+  {
+    using namespace dealii;
+    /* The model layer's names, used here unqualified. */
+    using model::Model;
+
     class ExplicitSimulation;
     class QuasiStaticSimulation;
 
     /**
      * `Time integration/Scheme = quasi-static then explicit`: the preload on
-     * the quasi-static load path (model::QuasiStaticSimulation, its
+     * the quasi-static load path (simulation::QuasiStaticSimulation, its
      * time_history.csv in `<Output directory>/preload/`), its converged
      * state kept as the preload checkpoint `<Output directory>/preload/
-     * checkpoint/` (model::write_preload()), then the explicit run
-     * (model::ExplicitSimulation, `<Output directory>/time_history.csv`)
+     * checkpoint/` (simulation::write_preload()), then the explicit run
+     * (simulation::ExplicitSimulation, `<Output directory>/time_history.csv`)
      * from that state: displacement, material history and locked
      * pretension sections, zero velocity except the parts' initial
      * velocities. The explicit element force is the quasi-static
@@ -32,7 +40,7 @@ namespace rubberdyn
      * With `Output/Restart from checkpoint = true` the quasi-static part is
      * skipped and the explicit run starts from the preload checkpoint in
      * the output directory, if the model's preload entries are the same
-     * (model::preload_parameters_text()): several impact runs (another end
+     * (simulation::preload_parameters_text()): several impact runs (another end
      * time, initial velocity, density) share one preload. If the explicit
      * run has written a checkpoint of its own (`Output/Checkpoint
      * interval`, in `<Output directory>/checkpoint/`), a restart continues
@@ -92,7 +100,7 @@ namespace rubberdyn
       std::unique_ptr<QuasiStaticSimulation> quasi_static;
       std::unique_ptr<ExplicitSimulation>    explicit_run;
     };
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn
 
 #endif

@@ -8,7 +8,7 @@
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/model/model.h>
-#include <rubberdyn/model/simulation_setup.h>
+#include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
@@ -18,8 +18,10 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace model;
+
     namespace setup
     {
       std::vector<elements::ElementGroup>
@@ -352,5 +354,5 @@ namespace rubberdyn
         return centre;
       }
     } // namespace setup
-  }   // namespace model
+  }   // namespace simulation
 } // namespace rubberdyn

@@ -1,5 +1,5 @@
-#ifndef rubberdyn_model_preload_h
-#define rubberdyn_model_preload_h
+#ifndef rubberdyn_simulation_preload_h
+#define rubberdyn_simulation_preload_h
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/partitioner.h>
@@ -14,8 +14,9 @@
 
 namespace rubberdyn
 {
-  namespace model
+  namespace simulation
   {
+    using namespace dealii;
     /**
      * Where the load path left a rigid part in equilibrium: x = c + d +
      * R (X - c) about its centre c.
@@ -120,7 +121,7 @@ namespace rubberdyn
       const unsigned int                                        n_sections,
       const std::vector<std::size_t>                           &contact_state_sizes,
       const MPI_Comm                                            comm);
-  } // namespace model
+  } // namespace simulation
 } // namespace rubberdyn
 
 #endif

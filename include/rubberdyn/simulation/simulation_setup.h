@@ -1,5 +1,5 @@
-#ifndef rubberdyn_model_simulation_setup_h
-#define rubberdyn_model_simulation_setup_h
+#ifndef rubberdyn_simulation_simulation_setup_h
+#define rubberdyn_simulation_simulation_setup_h
 
 #include <deal.II/base/point.h>
 
@@ -26,10 +26,18 @@ namespace rubberdyn
   {
     class Model;
     class SurfaceLoads;
+  } // namespace model
+
+  namespace simulation
+  {
+    using namespace dealii;
+    /* The model layer's names, used here unqualified. */
+    using model::Model;
+    using model::SurfaceLoads;
 
     /**
-     * The set-up every solver of a Model shares (model::ExplicitSimulation,
-     * model::QuasiStaticSimulation): its element groups, the element
+     * The set-up every solver of a Model shares (simulation::ExplicitSimulation,
+     * simulation::QuasiStaticSimulation): its element groups, the element
      * settings and the kinematic constraints of its boundary conditions,
      * built the same way whatever integrates them.
      */
@@ -137,7 +145,7 @@ namespace rubberdyn
                                 const unsigned int             p,
                                 const std::vector<VectorType> &masses);
     } // namespace setup
-  }   // namespace model
+  }   // namespace simulation
 } // namespace rubberdyn
 
 #endif
