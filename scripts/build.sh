@@ -49,6 +49,12 @@ build() {
   cmake --build "$BUILD_DIR" -j "$JOBS" --target all "$@"
 }
 
+# ccache keys on the absolute paths of the compile commands: with the
+# source tree as its base directory they are relative, so that a fresh
+# clone in another folder (CI's) finds the objects an earlier build of the
+# same sources left in the cache.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$SOURCE_DIR}
+
 # Open MPI refuses to run as root without these (CI runs as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
