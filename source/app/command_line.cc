@@ -10,7 +10,6 @@
 #include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/studies/study.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>

@@ -74,8 +74,6 @@ namespace rubberdyn
 
     namespace
     {
-      constexpr const char *component_names[3] = {"x", "y", "z"};
-
       /**
        * The owned nodes of part @p p (its cells' vertices whose dofs this
        * rank owns), with their reference positions.

@@ -40,6 +40,77 @@ namespace rubberdyn
         {
           return Registry<Entry>::instance();
         }
+
+
+
+        /**
+         * The parameter groups every study shares (Time integration,
+         * Contact, Output), declared by the registry, not by a study.
+         */
+        void
+        declare_shared_groups(dealii::ParameterHandler &prm)
+        {
+          parameters::TimeIntegration::declare_parameters(prm);
+          parameters::Contact::declare_parameters(prm);
+          parameters::Output::declare_parameters(prm);
+        }
+
+
+
+        /**
+         * Refuse an entry set in the file (a value other than its default)
+         * in a top-level subsection that only studies other than @p chosen
+         * declare: a Model file without `set Study = Model` ran as the
+         * default drop test and ignored the whole model.
+         *
+         * @throws InputError naming the entry, its studies and the chosen one.
+         */
+        void
+        refuse_entries_of_other_studies(const dealii::ParameterHandler &prm,
+                                        const std::string              &chosen)
+        {
+          // Which studies declare each top-level subsection. The shared
+          // groups belong to none, even where a study adds entries to one.
+          dealii::ParameterHandler shared;
+          declare_shared_groups(shared);
+          const std::vector<std::string> shared_groups =
+            io::subsection_names(shared);
+          std::map<std::string, std::vector<std::string>> studies_of;
+          studies().for_each([&](const std::string &study, const Entry &entry) {
+            dealii::ParameterHandler scratch;
+            entry.declare(scratch, {});
+            for (const std::string &subsection : io::subsection_names(scratch))
+              if (std::find(shared_groups.begin(),
+                            shared_groups.end(),
+                            subsection) == shared_groups.end())
+                studies_of[subsection].push_back(study);
+          });
+          for (const std::string &path : io::entries_changed_from_default(prm))
+            {
+              const std::size_t slash = path.find('/');
+              if (slash == std::string::npos)
+                continue;
+              const auto owners = studies_of.find(path.substr(0, slash));
+              if (owners == studies_of.end() ||
+                  std::find(owners->second.begin(),
+                            owners->second.end(),
+                            chosen) != owners->second.end())
+                continue;
+              std::string listed;
+              for (const std::string &study : owners->second)
+                listed += (listed.empty() ? "'" : "' or '") + study;
+              throw InputError(
+                path,
+                "this entry belongs to the " + listed + "' study, but the "
+                  "study is '" + chosen + "'" +
+                  (chosen == "Drop test" ?
+                     " (the default: is 'set Study = " + owners->second[0] +
+                       "' missing?)" :
+                     std::string()) +
+                  "; set Study to the study the file describes, or remove the "
+                  "entry");
+            }
+        }
       } // namespace
 
 
@@ -70,66 +141,11 @@ namespace rubberdyn
                           dealii::Patterns::Selection(studies().pattern()),
                           studies().documentation("The study to run. One of:"));
 
-        parameters::TimeIntegration::declare_parameters(prm);
-        parameters::Contact::declare_parameters(prm);
-        parameters::Output::declare_parameters(prm);
+        declare_shared_groups(prm);
 
         studies().for_each([&](const std::string &, const Entry &entry) {
           entry.declare(prm, names);
         });
-      }
-
-
-
-      void
-      refuse_entries_of_other_studies(const dealii::ParameterHandler &prm,
-                                      const std::string              &chosen)
-      {
-        // Which studies declare each top-level subsection (the shared
-        // groups, declared by the registry itself, belong to none).
-        // (A study may add entries to a shared group: the group stays
-        // shared.)
-        dealii::ParameterHandler shared;
-        parameters::TimeIntegration::declare_parameters(shared);
-        parameters::Contact::declare_parameters(shared);
-        parameters::Output::declare_parameters(shared);
-        const std::vector<std::string> shared_groups =
-          io::subsection_names(shared);
-        std::map<std::string, std::vector<std::string>> studies_of;
-        studies().for_each([&](const std::string &study, const Entry &entry) {
-          dealii::ParameterHandler scratch;
-          entry.declare(scratch, {});
-          for (const std::string &subsection : io::subsection_names(scratch))
-            if (std::find(shared_groups.begin(),
-                          shared_groups.end(),
-                          subsection) == shared_groups.end())
-              studies_of[subsection].push_back(study);
-        });
-        for (const std::string &path : io::entries_changed_from_default(prm))
-          {
-            const std::size_t slash = path.find('/');
-            if (slash == std::string::npos)
-              continue;
-            const auto owners = studies_of.find(path.substr(0, slash));
-            if (owners == studies_of.end() ||
-                std::find(owners->second.begin(),
-                          owners->second.end(),
-                          chosen) != owners->second.end())
-              continue;
-            std::string listed;
-            for (const std::string &study : owners->second)
-              listed += (listed.empty() ? "'" : "' or '") + study;
-            throw InputError(
-              path,
-              "this entry belongs to the " + listed + "' study, but the "
-                "study is '" + chosen + "'" +
-                (prm.get("Study") == "Drop test" ?
-                   " (the default: is 'set Study = " + owners->second[0] +
-                     "' missing?)" :
-                   std::string()) +
-                "; set Study to the study the file describes, or remove the "
-                "entry");
-          }
       }
 
 
