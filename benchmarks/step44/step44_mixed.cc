@@ -35,6 +35,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
 
+#include <rubberdyn/elements/dead_loaded_elements.h>
 #include <rubberdyn/elements/mixed_up_elements.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/io/gmsh_mesh.h>
@@ -50,67 +51,6 @@
 
 using namespace dealii;
 using namespace rubberdyn;
-
-namespace
-{
-  /** The elements' residual minus lambda f_ext (a dead load). */
-  class LoadedElements : public elements::ImplicitElements
-  {
-  public:
-    LoadedElements(elements::ImplicitElements &inner, const VectorType &f_ext)
-      : inner(inner)
-      , f_ext(f_ext)
-    {}
-    unsigned int
-    n_dofs_per_element() const override
-    {
-      return inner.n_dofs_per_element();
-    }
-    unsigned int
-    n_groups() const override
-    {
-      return inner.n_groups();
-    }
-    void
-    compute_residual(const VectorType            &u,
-                     VectorType                  &f,
-                     elements::ElementStepResult &result) override
-    {
-      inner.compute_residual(u, f, result);
-      for (unsigned int i = 0; i < f_ext.locally_owned_size(); ++i)
-        f.local_element(i) -= load_factor * f_ext.local_element(i);
-    }
-    void
-    compute_tangents(
-      const VectorType                                                &u,
-      const std::function<void(const unsigned int *, const double *)> &add)
-      const override
-    {
-      inner.compute_tangents(u, add);
-    }
-    bool
-    has_history() const override
-    {
-      return inner.has_history();
-    }
-
-    elements::CellAverages
-    cell_averages(const VectorType &u, const unsigned int n) const override
-    {
-      return inner.cell_averages(u, n);
-    }
-    void
-    accept_history() override
-    {
-      inner.accept_history();
-    }
-    double load_factor = 0.;
-
-  private:
-    elements::ImplicitElements &inner;
-    const VectorType           &f_ext;
-  };
-} // namespace
 
 
 
@@ -195,7 +135,7 @@ main(int argc, char **argv)
   }
   std::cout << "total load " << f_ext.l1_norm() << " kN (0.25 mm^2 x 0.4 GPa = 0.1)"
             << std::endl;
-  LoadedElements loaded(*element_layer, f_ext);
+  elements::DeadLoadedElements loaded(*element_layer, f_ext);
 
   using time_integration::KinematicConstraints;
   KinematicConstraints constraints(dof_handler, partitioner);

@@ -54,22 +54,24 @@ namespace rubberdyn
               "SolidHexElements: element group " + std::to_string(g) +
               " is of the mixed u-p formulation (MixedUPElements)");
           const bool fbar = (group.formulation == Formulation::fbar);
-          if (group.fbar_stabilization && !fbar)
+          if (group.fbar_stabilization != 0. && !fbar)
             throw std::invalid_argument(
               "SolidHexElements: element group " + std::to_string(g) +
               " has an F-bar stabilization but is not of the F-bar "
               "formulation");
-          const double stabilization =
-            fbar ?
-              group.fbar_stabilization.value_or(settings.fbar_stabilization) :
-              0.;
+          if (!(group.fbar_stabilization >= 0. &&
+                group.fbar_stabilization <= 1.))
+            throw std::invalid_argument(
+              "SolidHexElements: element group " + std::to_string(g) +
+              " has an F-bar stabilization outside [0, 1]");
+          const double stabilization = group.fbar_stabilization;
           groups.push_back({group.law,
                             group.formulation,
                             materials::create_stress_kernel(*group.law),
                             group.law->density(),
                             stabilization,
                             stabilization * group.law->bulk_modulus(),
-                            group.fbar_stabilization_entry});
+                            group.collapse_advice});
         }
 
       const FiniteElement<3> &fe = dof_handler.get_fe();

@@ -445,13 +445,13 @@ namespace rubberdyn
 
 
 
-      // The user's message for a failed element.
+      // The user's message for a failed element; a collapse's ends with
+      // the caller's advice (ElementGroup::collapse_advice).
       std::string
       failure_message(const FailureKind      kind,
                       const double           volume_ratio,
                       const ElementSettings &settings,
-                      const double           stabilization,
-                      const std::string     &stabilization_entry)
+                      const std::string     &collapse_advice)
       {
         const auto number = [](const double x) {
           std::ostringstream s;
@@ -471,11 +471,9 @@ namespace rubberdyn
                      "is " +
                      number(volume_ratio) + " of the element centre's (limit " +
                      number(settings.fbar_collapse_ratio) +
-                     "), the results are no longer physical; " +
-                     (stabilization < 0.03 ?
-                        "set " + stabilization_entry + " to 0.03 or more" :
-                        "raise " + stabilization_entry + " above " +
-                          number(stabilization));
+                     "), the results are no longer physical" +
+                     (collapse_advice.empty() ? std::string() :
+                                                "; " + collapse_advice);
             case FailureKind::none:
               break;
           }
@@ -558,8 +556,7 @@ namespace rubberdyn
                       failure_message(block_result.failure[l],
                                       block_result.min_volume_ratio[l],
                                       settings,
-                                      group.stabilization,
-                                      group.stabilization_entry);
+                                      group.collapse_advice);
                   }
               continue;
             }

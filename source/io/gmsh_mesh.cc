@@ -280,12 +280,78 @@ namespace rubberdyn
         scan_physical_names();
         void
         scan_entities();
+        /**
+         * msh 2.2's $Nodes and $Elements: the count line, then one record
+         * a line. The records' lines, after checking that there are as
+         * many as announced; @p item is "node" or "element", @p section
+         * "Nodes" or "Elements".
+         */
+        std::vector<std::size_t>
+        counted_records(std::size_t       &position,
+                        const std::size_t  end,
+                        const std::string &item,
+                        const std::string &section) const;
+
+        /** msh 4.1's header of a section of blocks: its line and counts. */
+        struct BlockHeader
+        {
+          std::size_t line;
+          long long   n_blocks;
+          long long   n_items;
+        };
+
+        /**
+         * msh 4.1: the header "numBlocks numItems minTag maxTag" of the
+         * $Nodes or $Elements section (@p item "node" or "element").
+         */
+        BlockHeader
+        block_header(std::size_t       &position,
+                     const std::size_t  end,
+                     const std::string &item) const;
+
+        /** msh 4.1: the line of block @p b (from 0) of @p header. */
+        std::size_t
+        next_block(std::size_t       &position,
+                   const std::size_t  end,
+                   const std::string &item,
+                   const long long    b,
+                   const BlockHeader &header) const;
+
+        /**
+         * msh 4.1: nothing after the blocks, and as many items in them
+         * (@p n_read) as the header announces.
+         */
+        void
+        check_blocks_end(std::size_t        position,
+                         const std::size_t  end,
+                         const std::string &item,
+                         const std::string &section,
+                         const BlockHeader &header,
+                         const long long    n_read) const;
+
+        void
+        add_node(const std::size_t       tag_line,
+                 const long long         tag,
+                 const std::size_t       line,
+                 const std::string_view *coordinates);
         void
         scan_nodes();
         [[noreturn]] void
         refuse_type(const std::size_t line,
                     const long long   number,
                     const long long   type) const;
+        /** msh 2.2: the element of line @p l. */
+        Element
+        element_of_record(const std::size_t l) const;
+        /**
+         * msh 4.1: a block of elements of @p type that no hexahedral mesh
+         * has: refused, naming its first element if it can.
+         */
+        [[noreturn]] void
+        refuse_block(const std::size_t block,
+                     const std::size_t position,
+                     const std::size_t end,
+                     const long long   type) const;
         void
         scan_elements();
         void
@@ -720,47 +786,123 @@ namespace rubberdyn
 
 
 
+      std::vector<std::size_t>
+      MshScanner::counted_records(std::size_t       &position,
+                                  const std::size_t  end,
+                                  const std::string &item,
+                                  const std::string &section) const
+      {
+        const std::string what = "the number of " + item + "s";
+        const std::size_t count_line = next_record(position, end, what);
+        const long long   n =
+          integer(count_line, tokens(count_line, 1, what)[0], what, 0, max_tag);
+        std::vector<std::size_t> records;
+        for (std::size_t l = position; l < end; ++l)
+          if (!trim(lines[l]).empty())
+            records.push_back(l);
+        if (static_cast<long long>(records.size()) != n)
+          fail(count_line,
+               "the $" + section + " section announces " + std::to_string(n) +
+                 " " + item + "s but lists " + std::to_string(records.size()));
+        return records;
+      }
+
+
+
+      MshScanner::BlockHeader
+      MshScanner::block_header(std::size_t       &position,
+                               const std::size_t  end,
+                               const std::string &item) const
+      {
+        const std::size_t line =
+          next_record(position,
+                      end,
+                      "the numbers of " + item + " blocks and " + item + "s");
+        const auto fields = tokens(line,
+                                   4,
+                                   "numbers of blocks and " + item +
+                                     "s, smallest and largest " + item +
+                                     " tag");
+        BlockHeader header;
+        header.line     = line;
+        header.n_blocks = integer(
+          line, fields[0], "the number of " + item + " blocks", 0, max_tag);
+        header.n_items =
+          integer(line, fields[1], "the number of " + item + "s", 0, max_tag);
+        integer(line, fields[2], "the smallest " + item + " tag", 0, max_tag);
+        integer(line, fields[3], "the largest " + item + " tag", 0, max_tag);
+        return header;
+      }
+
+
+
+      std::size_t
+      MshScanner::next_block(std::size_t       &position,
+                             const std::size_t  end,
+                             const std::string &item,
+                             const long long    b,
+                             const BlockHeader &header) const
+      {
+        return next_record(position,
+                           end,
+                           item + " block " + std::to_string(b + 1) + " of " +
+                             std::to_string(header.n_blocks));
+      }
+
+
+
+      void
+      MshScanner::check_blocks_end(std::size_t        position,
+                                   const std::size_t  end,
+                                   const std::string &item,
+                                   const std::string &section,
+                                   const BlockHeader &header,
+                                   const long long    n_read) const
+      {
+        for (; position < end; ++position)
+          if (!trim(lines[position]).empty())
+            fail(position,
+                 "unexpected '" + excerpt(lines[position]) + "' after the " +
+                   item + " blocks the $" + section + " section announces");
+        if (n_read != header.n_items)
+          fail(header.line,
+               "the $" + section + " section announces " +
+                 std::to_string(header.n_items) + " " + item +
+                 "s but its blocks hold " + std::to_string(n_read));
+      }
+
+
+
+      void
+      MshScanner::add_node(const std::size_t       tag_line,
+                           const long long         tag,
+                           const std::size_t       line,
+                           const std::string_view *coordinates)
+      {
+        dealii::Point<3> x;
+        for (unsigned int d = 0; d < 3; ++d)
+          x[d] = real(line, coordinates[d], "a node coordinate");
+        const auto inserted = node_line.emplace(tag, tag_line);
+        if (!inserted.second)
+          fail(tag_line,
+               "node " + std::to_string(tag) +
+                 " is defined twice (first in line " +
+                 std::to_string(inserted.first->second + 1) + ")");
+        node_position.emplace(tag, x);
+      }
+
+
+
       void
       MshScanner::scan_nodes()
       {
         const auto [begin, end] = sections.at("Nodes");
         std::size_t position    = begin + 1;
 
-        const auto add_node = [&](const std::size_t       tag_line,
-                                  const long long         tag,
-                                  const std::size_t       line,
-                                  const std::string_view *coordinates) {
-          dealii::Point<3> x;
-          for (unsigned int d = 0; d < 3; ++d)
-            x[d] = real(line, coordinates[d], "a node coordinate");
-          const auto inserted = node_line.emplace(tag, tag_line);
-          if (!inserted.second)
-            fail(tag_line,
-                 "node " + std::to_string(tag) +
-                   " is defined twice (first in line " +
-                   std::to_string(inserted.first->second + 1) + ")");
-          node_position.emplace(tag, x);
-        };
-
         if (!version_4)
           {
-            const std::size_t count_line =
-              next_record(position, end, "the number of nodes");
-            const long long n =
-              integer(count_line,
-                      tokens(count_line, 1, "the number of nodes")[0],
-                      "the number of nodes",
-                      0,
-                      max_tag);
-            std::vector<std::size_t> records;
-            for (std::size_t l = position; l < end; ++l)
-              if (!trim(lines[l]).empty())
-                records.push_back(l);
-            if (static_cast<long long>(records.size()) != n)
-              fail(count_line,
-                   "the $Nodes section announces " + std::to_string(n) +
-                     " nodes but lists " + std::to_string(records.size()));
-            for (const std::size_t l : records)
+            for (const std::size_t l :
+                 counted_records(position, end, "node", "Nodes"))
               {
                 const auto fields =
                   tokens(l, 4, "node tag and coordinates x y z");
@@ -774,26 +916,12 @@ namespace rubberdyn
         // msh 4.1: numEntityBlocks numNodes minNodeTag maxNodeTag, then per
         // block: entityDim entityTag parametric numNodesInBlock, the block's
         // node tags (one a line), then their coordinates (one a line).
-        const std::size_t header =
-          next_record(position, end, "the numbers of node blocks and nodes");
-        const auto      fields = tokens(header,
-                                   4,
-                                   "numbers of blocks and nodes, smallest and "
-                                        "largest node tag");
-        const long long n_blocks =
-          integer(header, fields[0], "the number of node blocks", 0, max_tag);
-        const long long n_nodes =
-          integer(header, fields[1], "the number of nodes", 0, max_tag);
-        integer(header, fields[2], "the smallest node tag", 0, max_tag);
-        integer(header, fields[3], "the largest node tag", 0, max_tag);
-        long long n_read = 0;
-        for (long long b = 0; b < n_blocks; ++b)
+        const BlockHeader header = block_header(position, end, "node");
+        long long         n_read = 0;
+        for (long long b = 0; b < header.n_blocks; ++b)
           {
             const std::size_t block =
-              next_record(position,
-                          end,
-                          "node block " + std::to_string(b + 1) + " of " +
-                            std::to_string(n_blocks));
+              next_block(position, end, "node", b, header);
             const auto block_fields =
               tokens(block,
                      4,
@@ -836,15 +964,7 @@ namespace rubberdyn
               }
             n_read += n_in_block;
           }
-        for (; position < end; ++position)
-          if (!trim(lines[position]).empty())
-            fail(position,
-                 "unexpected '" + excerpt(lines[position]) +
-                   "' after the node blocks the $Nodes section announces");
-        if (n_read != n_nodes)
-          fail(header,
-               "the $Nodes section announces " + std::to_string(n_nodes) +
-                 " nodes but its blocks hold " + std::to_string(n_read));
+        check_blocks_end(position, end, "node", "Nodes", header, n_read);
       }
 
 
@@ -941,6 +1061,81 @@ namespace rubberdyn
 
 
 
+      Element
+      MshScanner::element_of_record(const std::size_t l) const
+      {
+        // number type n_tags tags... nodes...
+        const auto fields = tokens_of(lines[l]);
+        if (fields.size() < 3)
+          fail(l,
+               "expected 'number type number-of-tags tags... nodes...', "
+               "found '" +
+                 excerpt(lines[l]) + "'");
+        Element element;
+        element.line   = l;
+        element.number = integer(l, fields[0], "an element number", 1, max_tag);
+        const long long type =
+          integer(l, fields[1], "an element type", 1, max_tag);
+        const AcceptedType *accepted = accepted_type(type);
+        if (accepted == nullptr)
+          refuse_type(l, element.number, type);
+        element.type = accepted->type;
+        const long long n_tags =
+          integer(l, fields[2], "the number of tags", 0, 100);
+        element.n_nodes            = accepted->n_nodes;
+        const std::size_t expected = 3 + n_tags + element.n_nodes;
+        if (fields.size() != expected)
+          fail(l,
+               "a " + std::string(accepted->name) + " with " +
+                 std::to_string(n_tags) + " tags needs " +
+                 std::to_string(expected) + " numbers, found " +
+                 std::to_string(fields.size()) + ": '" + excerpt(lines[l]) +
+                 "'");
+        element.physical_tag = -1;
+        for (long long t = 0; t < n_tags; ++t)
+          {
+            const long long tag = integer(l,
+                                          fields[3 + t],
+                                          t == 0 ? "a physical tag" : "a tag",
+                                          t == 0 ? 0 : -max_tag,
+                                          max_tag);
+            if (t == 0)
+              element.physical_tag = tag;
+          }
+        for (unsigned int k = 0; k < element.n_nodes; ++k)
+          element.nodes[k] =
+            integer(l, fields[3 + n_tags + k], "a node tag", 1, max_tag);
+        return element;
+      }
+
+
+
+      void
+      MshScanner::refuse_block(const std::size_t block,
+                               const std::size_t position,
+                               const std::size_t end,
+                               const long long   type) const
+      {
+        // Name the first element of the block.
+        std::size_t l = position;
+        while (l < end && trim(lines[l]).empty())
+          ++l;
+        const auto first = (l < end) ? tokens_of(lines[l]) :
+                                       std::vector<std::string_view>();
+        long long  number = 0;
+        if (first.empty() ||
+            std::from_chars(first[0].data(),
+                            first[0].data() + first[0].size(),
+                            number)
+                .ec != std::errc())
+          fail(block,
+               "the elements of this block are " + type_in_words(type) +
+                 "s: only hexahedral meshes are supported");
+        refuse_type(l, number, type);
+      }
+
+
+
       void
       MshScanner::scan_elements()
       {
@@ -949,139 +1144,37 @@ namespace rubberdyn
 
         if (!version_4)
           {
-            const std::size_t count_line =
-              next_record(position, end, "the number of elements");
-            const long long n =
-              integer(count_line,
-                      tokens(count_line, 1, "the number of elements")[0],
-                      "the number of elements",
-                      0,
-                      max_tag);
-            std::vector<std::size_t> records;
-            for (std::size_t l = position; l < end; ++l)
-              if (!trim(lines[l]).empty())
-                records.push_back(l);
-            if (static_cast<long long>(records.size()) != n)
-              fail(count_line,
-                   "the $Elements section announces " + std::to_string(n) +
-                     " elements but lists " + std::to_string(records.size()));
-            for (const std::size_t l : records)
-              {
-                // number type n_tags tags... nodes...
-                const auto fields = tokens_of(lines[l]);
-                if (fields.size() < 3)
-                  fail(l,
-                       "expected 'number type number-of-tags tags... "
-                       "nodes...', found '" +
-                         excerpt(lines[l]) + "'");
-                Element element;
-                element.line = l;
-                element.number =
-                  integer(l, fields[0], "an element number", 1, max_tag);
-                const long long type =
-                  integer(l, fields[1], "an element type", 1, max_tag);
-                const AcceptedType *accepted = accepted_type(type);
-                if (accepted == nullptr)
-                  refuse_type(l, element.number, type);
-                element.type = accepted->type;
-                const long long n_tags =
-                  integer(l, fields[2], "the number of tags", 0, 100);
-                element.n_nodes            = accepted->n_nodes;
-                const std::size_t expected = 3 + n_tags + element.n_nodes;
-                if (fields.size() != expected)
-                  fail(l,
-                       "a " + std::string(accepted->name) + " with " +
-                         std::to_string(n_tags) + " tags needs " +
-                         std::to_string(expected) + " numbers, found " +
-                         std::to_string(fields.size()) + ": '" +
-                         excerpt(lines[l]) + "'");
-                element.physical_tag = -1;
-                for (long long t = 0; t < n_tags; ++t)
-                  {
-                    const long long tag =
-                      integer(l,
-                              fields[3 + t],
-                              t == 0 ? "a physical tag" : "a tag",
-                              t == 0 ? 0 : -max_tag,
-                              max_tag);
-                    if (t == 0)
-                      element.physical_tag = tag;
-                  }
-                for (unsigned int k = 0; k < element.n_nodes; ++k)
-                  element.nodes[k] = integer(l,
-                                             fields[3 + n_tags + k],
-                                             "a node tag",
-                                             1,
-                                             max_tag);
-                add_element(element);
-              }
+            for (const std::size_t l :
+                 counted_records(position, end, "element", "Elements"))
+              add_element(element_of_record(l));
             return;
           }
 
         // msh 4.1: numEntityBlocks numElements minTag maxTag, then per
         // block: entityDim entityTag elementType numElementsInBlock and one
         // line per element: tag node tags...
-        const std::size_t header =
-          next_record(position,
-                      end,
-                      "the numbers of element blocks and elements");
-        const auto      fields   = tokens(header,
-                                   4,
-                                   "numbers of blocks and elements, smallest "
-                                          "and largest element tag");
-        const long long n_blocks = integer(header,
-                                           fields[0],
-                                           "the number of element blocks",
-                                           0,
-                                           max_tag);
-        const long long n_elements =
-          integer(header, fields[1], "the number of elements", 0, max_tag);
-        integer(header, fields[2], "the smallest element tag", 0, max_tag);
-        integer(header, fields[3], "the largest element tag", 0, max_tag);
-        long long n_read = 0;
-        for (long long b = 0; b < n_blocks; ++b)
+        const BlockHeader header = block_header(position, end, "element");
+        long long         n_read = 0;
+        for (long long b = 0; b < header.n_blocks; ++b)
           {
             const std::size_t block =
-              next_record(position,
-                          end,
-                          "element block " + std::to_string(b + 1) + " of " +
-                            std::to_string(n_blocks));
-            const auto      block_fields = tokens(block,
+              next_block(position, end, "element", b, header);
+            const auto block_fields = tokens(block,
                                              4,
                                              "entity dimension and tag, "
-                                                  "element type, number of "
-                                                  "elements");
+                                             "element type, number of "
+                                             "elements");
             const long long dim =
               integer(block, block_fields[0], "an entity dimension", 0, 3);
             const long long entity =
               integer(block, block_fields[1], "an entity tag", 1, max_tag);
             const long long type =
               integer(block, block_fields[2], "an element type", 1, max_tag);
-            const long long     n_in_block = integer(block,
-                                                 block_fields[3],
-                                                 "a number of elements",
-                                                 0,
-                                                 max_tag);
-            const AcceptedType *accepted   = accepted_type(type);
+            const long long n_in_block = integer(
+              block, block_fields[3], "a number of elements", 0, max_tag);
+            const AcceptedType *accepted = accepted_type(type);
             if (accepted == nullptr)
-              {
-                // Name the first element of the block.
-                std::size_t l = position;
-                while (l < end && trim(lines[l]).empty())
-                  ++l;
-                const auto first  = (l < end) ? tokens_of(lines[l]) :
-                                                std::vector<std::string_view>();
-                long long  number = 0;
-                if (first.empty() ||
-                    std::from_chars(first[0].data(),
-                                    first[0].data() + first[0].size(),
-                                    number)
-                        .ec != std::errc())
-                  fail(block,
-                       "the elements of this block are " + type_in_words(type) +
-                         "s: only hexahedral meshes are supported");
-                refuse_type(l, number, type);
-              }
+              refuse_block(block, position, end, type);
             if (accepted->dim != dim)
               fail(block,
                    "a block of " + std::string(accepted->name) +
@@ -1127,16 +1220,7 @@ namespace rubberdyn
               }
             n_read += n_in_block;
           }
-        for (; position < end; ++position)
-          if (!trim(lines[position]).empty())
-            fail(position,
-                 "unexpected '" + excerpt(lines[position]) +
-                   "' after the element blocks the $Elements section "
-                   "announces");
-        if (n_read != n_elements)
-          fail(header,
-               "the $Elements section announces " + std::to_string(n_elements) +
-                 " elements but its blocks hold " + std::to_string(n_read));
+        check_blocks_end(position, end, "element", "Elements", header, n_read);
       }
 
 

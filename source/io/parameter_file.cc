@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -747,14 +748,25 @@ namespace rubberdyn
                                             path + demangle(child.first) + '/');
                 continue;
               }
-            if (!starts_with(
-                  child.second.get<std::string>("pattern_description", ""),
-                  "[Double"))
-              continue;
-            errno                    = 0;
-            char        *end         = nullptr;
-            const double x           = std::strtod(value->c_str(), &end);
-            const bool   range_error = (errno == ERANGE);
+            // A number, or a list of numbers (a point, a vector).
+            const std::string pattern =
+              child.second.get<std::string>("pattern_description", "");
+            std::vector<std::string> numbers;
+            if (starts_with(pattern, "[Double"))
+              numbers.push_back(*value);
+            else if (starts_with(pattern, "[List of <[Double"))
+              numbers = dealii::Utilities::split_string_list(*value, ',');
+            double x           = 0.;
+            bool   range_error = false;
+            for (const std::string &number : numbers)
+              {
+                errno       = 0;
+                char *end   = nullptr;
+                x           = std::strtod(number.c_str(), &end);
+                range_error = (errno == ERANGE);
+                if (!parameter_tools::is_usable_number(x) || range_error)
+                  break;
+              }
             if (parameter_tools::is_usable_number(x) && !range_error)
               continue;
             const std::string  name = path + demangle(child.first);

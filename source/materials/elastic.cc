@@ -17,7 +17,7 @@ namespace rubberdyn
 
     template <int dim>
     Elastic<dim>::Elastic(const ParameterHandler &prm, const std::string &path)
-      : moduli(finite_strain_j2::read_elastic_moduli(prm, path))
+      : IsotropicMetal<dim>(finite_strain_j2::read_elastic_moduli(prm, path))
     {}
 
 
@@ -26,9 +26,10 @@ namespace rubberdyn
     Elastic<dim>::Elastic(const double youngs_modulus,
                           const double poissons_ratio,
                           const double density)
-      : moduli{youngs_modulus / (2. * (1. + poissons_ratio)),
-               youngs_modulus / (3. * (1. - 2. * poissons_ratio)),
-               density}
+      : IsotropicMetal<dim>(
+          IsotropicMetal<dim>::moduli_of(youngs_modulus,
+                                         poissons_ratio,
+                                         density))
     {}
 
 
@@ -50,58 +51,13 @@ namespace rubberdyn
 
 
     template <int dim>
-    double
-    Elastic<dim>::density() const
-    {
-      return moduli.density;
-    }
-
-
-
-    template <int dim>
-    double
-    Elastic<dim>::shear_modulus() const
-    {
-      return moduli.shear_modulus;
-    }
-
-
-
-    template <int dim>
-    double
-    Elastic<dim>::bulk_modulus() const
-    {
-      return moduli.bulk_modulus;
-    }
-
-
-
-    template <int dim>
-    double
-    Elastic<dim>::reference_wave_speed() const
-    {
-      return finite_strain_j2::reference_wave_speed(moduli);
-    }
-
-
-
-    template <int dim>
-    std::vector<DerivedConstant>
-    Elastic<dim>::derived_constants() const
-    {
-      return finite_strain_j2::derived_constants(moduli);
-    }
-
-
-
-    template <int dim>
     void
     Elastic<dim>::print_constants(std::ostream &out) const
     {
       out << "Elastic: G = " << format_short(moduli.shear_modulus)
           << " GPa, K = " << format_short(moduli.bulk_modulus)
           << " GPa, density = " << format_short(moduli.density)
-          << " kg/mm^3, wave speed = " << format_short(reference_wave_speed())
+          << " kg/mm^3, wave speed = " << format_short(this->reference_wave_speed())
           << " mm/ms" << std::endl;
     }
 

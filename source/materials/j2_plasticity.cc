@@ -18,7 +18,7 @@ namespace rubberdyn
     template <int dim>
     J2Plasticity<dim>::J2Plasticity(const ParameterHandler &prm,
                                     const std::string &     path)
-      : moduli(finite_strain_j2::read_elastic_moduli(prm, path))
+      : IsotropicMetal<dim>(finite_strain_j2::read_elastic_moduli(prm, path))
       , hardening(HardeningCurve::parse(prm.get_double("Yield stress"),
                                         prm.get("Hardening curve"),
                                         path))
@@ -31,9 +31,10 @@ namespace rubberdyn
                                     const double          poissons_ratio,
                                     const double          density,
                                     const HardeningCurve &hardening)
-      : moduli{youngs_modulus / (2. * (1. + poissons_ratio)),
-               youngs_modulus / (3. * (1. - 2. * poissons_ratio)),
-               density}
+      : IsotropicMetal<dim>(
+          IsotropicMetal<dim>::moduli_of(youngs_modulus,
+                                         poissons_ratio,
+                                         density))
       , hardening(hardening)
     {}
 
@@ -72,15 +73,6 @@ namespace rubberdyn
 
 
     template <int dim>
-    double
-    J2Plasticity<dim>::density() const
-    {
-      return moduli.density;
-    }
-
-
-
-    template <int dim>
     unsigned int
     J2Plasticity<dim>::n_state_variables() const
     {
@@ -110,39 +102,12 @@ namespace rubberdyn
 
 
     template <int dim>
-    double
-    J2Plasticity<dim>::shear_modulus() const
-    {
-      return moduli.shear_modulus;
-    }
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::bulk_modulus() const
-    {
-      return moduli.bulk_modulus;
-    }
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::reference_wave_speed() const
-    {
-      return finite_strain_j2::reference_wave_speed(moduli);
-    }
-
-
-
-    template <int dim>
     std::vector<DerivedConstant>
     J2Plasticity<dim>::derived_constants() const
     {
       using parameter_tools::Sign;
       std::vector<DerivedConstant> constants =
-        finite_strain_j2::derived_constants(moduli);
+        IsotropicMetal<dim>::derived_constants();
       const double H = hardening.largest_slope();
       constants.push_back({"the initial yield stress",
                            hardening.yield_stress(0.),

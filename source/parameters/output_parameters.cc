@@ -43,8 +43,11 @@ namespace rubberdyn
                         "output",
                         Patterns::DirectoryName(),
                         "Directory for all results; created if missing. "
-                        "Relative paths are relative to the working "
-                        "directory.");
+                        "A relative path is relative to the working "
+                        "directory the run starts in (the results go where "
+                        "you run), unlike Mesh/Mesh file, which is relative "
+                        "to the parameter file's folder (the inputs are "
+                        "found where they are).");
       prm.declare_entry("Field output interval",
                         "1",
                         Patterns::Double(0.),

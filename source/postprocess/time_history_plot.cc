@@ -551,39 +551,266 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /** The horizontal layout all panels share, and the x axis. */
+      struct Frame
+      {
+        /** Left edge of the plot area (px). */
+        double left;
+        /** Left edge of the legends (px). */
+        double    legend_left;
+        double    x_min, x_scale;
+        AxisTicks x_ticks;
+        /** Width of the thinning buckets (px). */
+        double bucket_width;
+
+        double
+        to_x(const double x) const
+        {
+          return left + (x - x_min) * x_scale;
+        }
+      };
+
+
+
+      /**
+       * The panels that have at least one column of @p table, each with
+       * its curves; @p n_curves counts the curves of all.
+       */
+      std::vector<PanelLayout>
+      panels_with_data(const Table                  &table,
+                       const std::vector<PlotPanel> &panels,
+                       const std::string            &csv_path,
+                       std::size_t                  &n_curves)
+      {
+        std::vector<PanelLayout> layouts;
+        n_curves = 0;
+        for (const PlotPanel &panel : panels)
+          {
+            PanelLayout layout{&panel, {}, 0., 0., {}, 0., 0.};
+            for (const std::string &name : panel.columns)
+              {
+                const int column = table.index(name);
+                if (column <= 0)
+                  continue;
+                const std::size_t k = layout.curves.size();
+                layout.curves.push_back({name,
+                                         column,
+                                         palette[k % palette.size()],
+                                         k >= palette.size()});
+              }
+            if (layout.curves.empty())
+              continue;
+            n_curves += layout.curves.size();
+            layouts.push_back(layout);
+          }
+        if (layouts.empty())
+          throw std::runtime_error(
+            csv_path + ": none of the columns to plot is in this file");
+        return layouts;
+      }
+
+
+
+      /**
+       * Each panel's y axis: the range of its data plus 5 %, and its
+       * ticks. Returns the longest tick label and curve name (characters),
+       * which set the frame's margins.
+       */
+      std::pair<std::size_t, std::size_t>
+      fit_y_axes(const Table &table, std::vector<PanelLayout> &layouts)
+      {
+        std::size_t max_tick_label = 1, max_name = 1;
+        for (PanelLayout &layout : layouts)
+          {
+            double y_min = std::numeric_limits<double>::infinity();
+            double y_max = -y_min;
+            for (const Curve &curve : layout.curves)
+              {
+                const std::vector<double> &y = table.columns[curve.column];
+                for (std::size_t row = 0; row < y.size(); ++row)
+                  if (std::isfinite(y[row]) && std::isfinite(table.x[row]))
+                    {
+                      y_min = std::min(y_min, y[row]);
+                      y_max = std::max(y_max, y[row]);
+                    }
+                max_name = std::max(max_name, curve.name.size());
+              }
+            if (y_min <= y_max)
+              {
+                std::tie(y_min, y_max) = drawable_range(y_min, y_max);
+                const double margin    = 0.05 * (y_max - y_min);
+                y_min -= margin;
+                y_max += margin;
+              }
+            else
+              std::tie(y_min, y_max) = drawable_range(y_min, y_max);
+            layout.y_min   = y_min;
+            layout.y_max   = y_max;
+            layout.y_ticks = nice_ticks(y_min, y_max, 5);
+            for (const std::string &label : layout.y_ticks.labels)
+              max_tick_label = std::max(max_tick_label, label.size());
+          }
+        return {max_tick_label, max_name};
+      }
+
+
+
+      /**
+       * Append one panel to @p out: grid, curves, frame and ticks, labels
+       * and legend; the x tick labels and the x label below the @p last.
+       */
+      void
+      draw_panel(std::string       &out,
+                 const Table       &table,
+                 const PanelLayout &layout,
+                 const Frame       &frame,
+                 const bool         last,
+                 const std::string &x_label)
+      {
+        const double top = layout.top, bottom = top + layout.height;
+        const double right = frame.left + plot_width;
+        const auto   to_x  = [&frame](const double x) { return frame.to_x(x); };
+        const double y_scale = layout.height / (layout.y_max - layout.y_min);
+        const auto   to_y    = [&](const double value) {
+          return bottom - (value - layout.y_min) * y_scale;
+        };
+
+        out += "<g class=\"panel\">\n";
+        if (!layout.panel->title.empty())
+          append_text(out,
+                      frame.left,
+                      top - 9.,
+                      layout.panel->title,
+                      "class=\"title\" font-size=\"13\" font-weight=\"bold\"");
+
+        // Grid: light lines at the ticks, a darker one at y = 0.
+        out += "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"1\">\n";
+        for (const double x : frame.x_ticks.values)
+          append_line(out,
+                      crisp(frame.to_x(x)),
+                      top,
+                      crisp(frame.to_x(x)),
+                      bottom);
+        for (const double value : layout.y_ticks.values)
+          append_line(out,
+                      frame.left,
+                      crisp(to_y(value)),
+                      right,
+                      crisp(to_y(value)),
+                      value == 0. ? "stroke=\"#999999\"" : "");
+        out += "</g>\n";
+
+        // Curves.
+        out += "<g class=\"curves\" fill=\"none\" stroke-width=\"1.5\" "
+               "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+        for (const Curve &curve : layout.curves)
+          draw_curve(out,
+                     table.x,
+                     table.columns[curve.column],
+                     curve,
+                     to_x,
+                     to_y,
+                     frame.left,
+                     frame.bucket_width);
+        out += "</g>\n";
+
+        // Frame, ticks, tick labels.
+        out += "<rect class=\"frame\" x=\"" + coordinate(crisp(frame.left)) +
+               "\" y=\"" + coordinate(crisp(top)) + "\" width=\"" +
+               coordinate(crisp(right) - crisp(frame.left)) + "\" height=\"" +
+               coordinate(crisp(bottom) - crisp(top)) +
+               "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+        out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
+        for (const double x : frame.x_ticks.values)
+          append_line(out,
+                      crisp(frame.to_x(x)),
+                      crisp(bottom),
+                      crisp(frame.to_x(x)),
+                      crisp(bottom) + tick_length);
+        for (const double value : layout.y_ticks.values)
+          append_line(out,
+                      crisp(frame.left) - tick_length,
+                      crisp(to_y(value)),
+                      crisp(frame.left),
+                      crisp(to_y(value)));
+        out += "</g>\n";
+        // The labels are centred on the exact positions of their ticks:
+        // 4 px below the centre is the baseline of 12 px digits.
+        out += "<g class=\"y-tick-labels\" text-anchor=\"end\">\n";
+        for (std::size_t k = 0; k < layout.y_ticks.values.size(); ++k)
+          append_text(out,
+                      frame.left - tick_length - 3.,
+                      to_y(layout.y_ticks.values[k]) + 4.,
+                      layout.y_ticks.labels[k]);
+        out += "</g>\n";
+        if (last)
+          {
+            out += "<g class=\"x-tick-labels\" text-anchor=\"middle\">\n";
+            for (std::size_t k = 0; k < frame.x_ticks.values.size(); ++k)
+              append_text(out,
+                          frame.to_x(frame.x_ticks.values[k]),
+                          bottom + tick_length + 14.,
+                          frame.x_ticks.labels[k]);
+            out += "</g>\n";
+          }
+        if (!layout.panel->y_label.empty())
+          {
+            const double label_x = outer_margin + 10.;
+            const double label_y = 0.5 * (top + bottom);
+            append_text(
+              out,
+              label_x,
+              label_y,
+              layout.panel->y_label,
+              "class=\"y-label\" text-anchor=\"middle\" "
+              "dominant-baseline=\"central\" transform=\"rotate(-90 " +
+                coordinate(label_x) + " " + coordinate(label_y) + ")\"");
+          }
+
+        // Legend, to the right of the plot, top-aligned with it.
+        out += "<g class=\"legend\">\n";
+        for (std::size_t k = 0; k < layout.curves.size(); ++k)
+          {
+            const Curve &curve = layout.curves[k];
+            const double row_y = top + 10. + legend_row * k;
+            append_line(out,
+                        frame.legend_left,
+                        row_y,
+                        frame.legend_left + legend_line,
+                        row_y,
+                        "stroke=\"" + curve.colour + "\" stroke-width=\"2\"" +
+                          (curve.dashed ? " stroke-dasharray=\"6 3\"" : ""));
+            append_text(out,
+                        frame.legend_left + legend_line + 6.,
+                        row_y + 4.,
+                        curve.name);
+          }
+        out += "</g>\n";
+        out += "</g>\n";
+
+        if (last)
+          append_text(out,
+                      frame.left + 0.5 * plot_width,
+                      bottom + tick_length + 18. + 18.,
+                      x_label,
+                      "class=\"x-label\" text-anchor=\"middle\"");
+      }
+    } // namespace
+
+
+
     void
     write_time_history_plot(const std::string            &csv_path,
                             const std::string            &svg_path,
                             const std::vector<PlotPanel> &panels,
                             const std::string            &x_label)
     {
-      const Table table = read_table(csv_path, panels);
-
-      // The panels that have at least one column of the file.
-      std::vector<PanelLayout> layouts;
+      const Table              table    = read_table(csv_path, panels);
       std::size_t              n_curves = 0;
-      for (const PlotPanel &panel : panels)
-        {
-          PanelLayout layout{&panel, {}, 0., 0., {}, 0., 0.};
-          for (const std::string &name : panel.columns)
-            {
-              const int column = table.index(name);
-              if (column <= 0)
-                continue;
-              const std::size_t k = layout.curves.size();
-              layout.curves.push_back({name,
-                                       column,
-                                       palette[k % palette.size()],
-                                       k >= palette.size()});
-            }
-          if (layout.curves.empty())
-            continue;
-          n_curves += layout.curves.size();
-          layouts.push_back(layout);
-        }
-      if (layouts.empty())
-        throw std::runtime_error(
-          csv_path + ": none of the columns to plot is in this file");
+      std::vector<PanelLayout> layouts =
+        panels_with_data(table, panels, csv_path, n_curves);
 
       // Axes: x spans the data, y the data of each panel plus 5 %.
       double x_min = std::numeric_limits<double>::infinity();
@@ -594,40 +821,9 @@ namespace rubberdyn
             x_min = std::min(x_min, x);
             x_max = std::max(x_max, x);
           }
-      std::tie(x_min, x_max)  = drawable_range(x_min, x_max);
-      const AxisTicks x_ticks = nice_ticks(x_min, x_max, 6);
-
-      std::size_t max_tick_label = 1, max_name = 1;
-      for (PanelLayout &layout : layouts)
-        {
-          double y_min = std::numeric_limits<double>::infinity();
-          double y_max = -y_min;
-          for (const Curve &curve : layout.curves)
-            {
-              const std::vector<double> &y = table.columns[curve.column];
-              for (std::size_t row = 0; row < y.size(); ++row)
-                if (std::isfinite(y[row]) && std::isfinite(table.x[row]))
-                  {
-                    y_min = std::min(y_min, y[row]);
-                    y_max = std::max(y_max, y[row]);
-                  }
-              max_name = std::max(max_name, curve.name.size());
-            }
-          if (y_min <= y_max)
-            {
-              std::tie(y_min, y_max) = drawable_range(y_min, y_max);
-              const double margin    = 0.05 * (y_max - y_min);
-              y_min -= margin;
-              y_max += margin;
-            }
-          else
-            std::tie(y_min, y_max) = drawable_range(y_min, y_max);
-          layout.y_min   = y_min;
-          layout.y_max   = y_max;
-          layout.y_ticks = nice_ticks(y_min, y_max, 5);
-          for (const std::string &label : layout.y_ticks.labels)
-            max_tick_label = std::max(max_tick_label, label.size());
-        }
+      std::tie(x_min, x_max)                = drawable_range(x_min, x_max);
+      const AxisTicks x_ticks               = nice_ticks(x_min, x_max, 6);
+      const auto [max_tick_label, max_name] = fit_y_axes(table, layouts);
 
       // Layout: panels stacked, sharing the plot area's left and right.
       const bool any_y_label =
@@ -655,13 +851,17 @@ namespace rubberdyn
       const double height = y + tick_length + 18. + 22. + outer_margin;
 
       const double x_scale = plot_width / (x_max - x_min);
-      const auto   to_x    = [&](const double x) {
-        return left + (x - x_min) * x_scale;
-      };
       // Thin more coarsely if the figure has so many curves that four
       // points per pixel column would make the file large.
       const double bucket_width =
         std::max(1., std::ceil(4. * plot_width * n_curves / max_total_points));
+
+      const Frame frame{left,
+                        legend_left,
+                        x_min,
+                        x_scale,
+                        x_ticks,
+                        bucket_width};
 
       std::string out;
       out.reserve(1 << 20);
@@ -677,133 +877,12 @@ namespace rubberdyn
       out += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
 
       for (std::size_t p = 0; p < layouts.size(); ++p)
-        {
-          const PanelLayout &layout = layouts[p];
-          const double       top = layout.top, bottom = top + layout.height;
-          const double       right = left + plot_width;
-          const double y_scale = layout.height / (layout.y_max - layout.y_min);
-          const auto   to_y    = [&](const double value) {
-            return bottom - (value - layout.y_min) * y_scale;
-          };
-          const bool last = p + 1 == layouts.size();
-
-          out += "<g class=\"panel\">\n";
-          if (!layout.panel->title.empty())
-            append_text(
-              out,
-              left,
-              top - 9.,
-              layout.panel->title,
-              "class=\"title\" font-size=\"13\" font-weight=\"bold\"");
-
-          // Grid: light lines at the ticks, a darker one at y = 0.
-          out += "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"1\">\n";
-          for (const double x : x_ticks.values)
-            append_line(out, crisp(to_x(x)), top, crisp(to_x(x)), bottom);
-          for (const double value : layout.y_ticks.values)
-            append_line(out,
-                        left,
-                        crisp(to_y(value)),
-                        right,
-                        crisp(to_y(value)),
-                        value == 0. ? "stroke=\"#999999\"" : "");
-          out += "</g>\n";
-
-          // Curves.
-          out += "<g class=\"curves\" fill=\"none\" stroke-width=\"1.5\" "
-                 "stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-          for (const Curve &curve : layout.curves)
-            draw_curve(out,
-                       table.x,
-                       table.columns[curve.column],
-                       curve,
-                       to_x,
-                       to_y,
-                       left,
-                       bucket_width);
-          out += "</g>\n";
-
-          // Frame, ticks, tick labels.
-          out += "<rect class=\"frame\" x=\"" + coordinate(crisp(left)) +
-                 "\" y=\"" + coordinate(crisp(top)) + "\" width=\"" +
-                 coordinate(crisp(right) - crisp(left)) + "\" height=\"" +
-                 coordinate(crisp(bottom) - crisp(top)) +
-                 "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-          out += "<g class=\"ticks\" stroke=\"#000000\" stroke-width=\"1\">\n";
-          for (const double x : x_ticks.values)
-            append_line(out,
-                        crisp(to_x(x)),
-                        crisp(bottom),
-                        crisp(to_x(x)),
-                        crisp(bottom) + tick_length);
-          for (const double value : layout.y_ticks.values)
-            append_line(out,
-                        crisp(left) - tick_length,
-                        crisp(to_y(value)),
-                        crisp(left),
-                        crisp(to_y(value)));
-          out += "</g>\n";
-          // The labels are centred on the exact positions of their ticks:
-          // 4 px below the centre is the baseline of 12 px digits.
-          out += "<g class=\"y-tick-labels\" text-anchor=\"end\">\n";
-          for (std::size_t k = 0; k < layout.y_ticks.values.size(); ++k)
-            append_text(out,
-                        left - tick_length - 3.,
-                        to_y(layout.y_ticks.values[k]) + 4.,
-                        layout.y_ticks.labels[k]);
-          out += "</g>\n";
-          if (last)
-            {
-              out += "<g class=\"x-tick-labels\" text-anchor=\"middle\">\n";
-              for (std::size_t k = 0; k < x_ticks.values.size(); ++k)
-                append_text(out,
-                            to_x(x_ticks.values[k]),
-                            bottom + tick_length + 14.,
-                            x_ticks.labels[k]);
-              out += "</g>\n";
-            }
-          if (!layout.panel->y_label.empty())
-            {
-              const double label_x = outer_margin + 10.;
-              const double label_y = 0.5 * (top + bottom);
-              append_text(
-                out,
-                label_x,
-                label_y,
-                layout.panel->y_label,
-                "class=\"y-label\" text-anchor=\"middle\" "
-                "dominant-baseline=\"central\" transform=\"rotate(-90 " +
-                  coordinate(label_x) + " " + coordinate(label_y) + ")\"");
-            }
-
-          // Legend, to the right of the plot, top-aligned with it.
-          out += "<g class=\"legend\">\n";
-          for (std::size_t k = 0; k < layout.curves.size(); ++k)
-            {
-              const Curve &curve = layout.curves[k];
-              const double row_y = top + 10. + legend_row * k;
-              append_line(out,
-                          legend_left,
-                          row_y,
-                          legend_left + legend_line,
-                          row_y,
-                          "stroke=\"" + curve.colour + "\" stroke-width=\"2\"" +
-                            (curve.dashed ? " stroke-dasharray=\"6 3\"" : ""));
-              append_text(out,
-                          legend_left + legend_line + 6.,
-                          row_y + 4.,
-                          curve.name);
-            }
-          out += "</g>\n";
-          out += "</g>\n";
-
-          if (last)
-            append_text(out,
-                        left + 0.5 * plot_width,
-                        bottom + tick_length + 18. + 18.,
-                        x_label,
-                        "class=\"x-label\" text-anchor=\"middle\"");
-        }
+        draw_panel(out,
+                   table,
+                   layouts[p],
+                   frame,
+                   p + 1 == layouts.size(),
+                   x_label);
       out += "</svg>\n";
 
       std::ofstream file(svg_path, std::ios::binary);

@@ -203,7 +203,7 @@ namespace rubberdyn
 
       // Elements: one group per part (its law and formulation).
       const std::vector<elements::ElementGroup> groups =
-        setup::element_groups(model);
+        setup::element_groups(model, time_integration);
       const elements::ElementSettings element_settings =
         setup::element_settings(time_integration);
       elements = std::make_unique<elements::SolidHexElements>();

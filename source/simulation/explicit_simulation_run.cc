@@ -12,6 +12,7 @@
 #include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
+#include <rubberdyn/postprocess/run_summary.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
@@ -53,15 +54,7 @@ namespace rubberdyn
         durable_files::write(path, data);
       }
 
-      std::string
-      json_number(const double value)
-      {
-        if (!std::isfinite(value))
-          return "null";
-        std::ostringstream s;
-        s << std::setprecision(9) << value;
-        return s.str();
-      }
+      using postprocess::json_number;
     } // namespace
 
 
@@ -96,8 +89,16 @@ namespace rubberdyn
           if (ends_with(column, "_displacement"))
             displacements.columns.push_back(column);
         }
+      // The nodes of Output/History nodes (LS-DYNA's history nodes).
+      postprocess::PlotPanel history_nodes{"History nodes",
+                                           "displacement (mm)",
+                                           {}};
+      for (const parameters::Output::HistoryNode &node : output.history_nodes)
+        for (const char *d : {"_x", "_y", "_z"})
+          history_nodes.columns.push_back(node.name + "_displacement" + d);
       std::vector<postprocess::PlotPanel> panels = {energies};
-      for (const postprocess::PlotPanel &panel : {forces, displacements})
+      for (const postprocess::PlotPanel &panel :
+           {forces, displacements, history_nodes})
         if (!panel.columns.empty())
           panels.push_back(panel);
       postprocess::write_time_history_plot(output.directory +
@@ -639,12 +640,8 @@ namespace rubberdyn
         plugin->summary(view, entries);
       if (root)
         {
-          std::ofstream summary(output.directory + "/run_summary.json");
-          summary << "{";
-          for (unsigned int i = 0; i < entries.size(); ++i)
-            summary << (i > 0 ? "," : "") << "\n  \"" << entries[i].first
-                    << "\": " << entries[i].second;
-          summary << "\n}\n";
+          postprocess::write_run_summary(output.directory + "/run_summary.json",
+                                         entries);
           // A picture of the main columns beside the table.
           history->make_durable();
           write_history_plot(columns);

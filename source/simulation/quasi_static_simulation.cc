@@ -16,11 +16,14 @@
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_nodes.h>
+#include <rubberdyn/postprocess/run_summary.h>
+#include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/postprocess/time_history.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <ostream>
@@ -123,7 +126,7 @@ namespace rubberdyn
           auto mixed = std::make_unique<elements::MixedUPElements>();
           mixed->initialize(model.dof_handler,
                             model.partitioner,
-                            setup::element_groups(model));
+                            setup::element_groups(model, time_integration));
           elements = std::move(mixed);
         }
       else
@@ -131,7 +134,7 @@ namespace rubberdyn
           auto hexes = std::make_unique<elements::SolidHexElements>();
           hexes->initialize(model.dof_handler,
                             model.partitioner,
-                            setup::element_groups(model),
+                            setup::element_groups(model, time_integration),
                             setup::element_settings(time_integration));
           cut_pretension_sections(*hexes);
           elements = std::move(hexes);
@@ -473,6 +476,12 @@ namespace rubberdyn
     QuasiStaticSimulation::run(std::ostream &log)
     {
       const bool root = Utilities::MPI::this_mpi_process(model.comm) == 0;
+      const auto wall_start   = std::chrono::steady_clock::now();
+      const auto wall_seconds = [&wall_start]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             wall_start)
+          .count();
+      };
       log_model(log);
       std::filesystem::create_directories(output.directory);
 
@@ -686,11 +695,14 @@ namespace rubberdyn
               write_fields();
           });
           write_fields();
+          history.make_durable();
+          write_summary_and_plot(columns, wall_seconds(), "");
         }
       catch (const time_integration::QuasiStaticFailure &failure)
         {
           write_fields();
           history.make_durable();
+          write_summary_and_plot(columns, wall_seconds(), failure.what());
           throw std::runtime_error(
             "Quasi-static run failed: " + std::string(failure.what()) +
             " (its rows are in " + output.directory +
@@ -717,6 +729,82 @@ namespace rubberdyn
             log << " (which took " << wasted << " more iterations)";
           log << std::endl;
         }
+    }
+
+
+
+    void
+    QuasiStaticSimulation::write_summary_and_plot(
+      const std::vector<std::string> &columns,
+      const double                    wall_seconds,
+      const std::string              &failure) const
+    {
+      if (Utilities::MPI::this_mpi_process(model.comm) != 0)
+        return;
+      const time_integration::QuasiStaticSolver &s = *newton;
+      unsigned int iterations = 0, linear = 0, cutbacks = 0, wasted = 0;
+      for (const auto &step : s.steps())
+        {
+          iterations += step.iterations;
+          linear += step.linear_iterations;
+          cutbacks += step.cutbacks;
+          wasted += step.cutback_iterations;
+        }
+      using postprocess::json_number;
+      std::vector<postprocess::SummaryEntry> entries = {
+        {"scheme", postprocess::json_string(time_integration.scheme)},
+        {"cells", std::to_string(model.triangulation.n_global_active_cells())},
+        {"dofs", std::to_string(model.dof_handler.n_dofs())},
+        {"ranks",
+         std::to_string(Utilities::MPI::n_mpi_processes(model.comm))},
+        {"linear_solver", postprocess::json_string(newton->linear_solver_name())},
+        {"load_steps", std::to_string(s.steps().size())},
+        {"end_time", json_number(s.time())},
+        {"quasi_static_end_time",
+         json_number(time_integration.quasi_static_end_time)},
+        {"reached_end", failure.empty() ? "true" : "false"},
+        {"newton_iterations", std::to_string(iterations)},
+        {"linear_iterations", std::to_string(linear)},
+        {"cutbacks", std::to_string(cutbacks)},
+        {"cutback_iterations", std::to_string(wasted)},
+        {"wall_seconds", json_number(wall_seconds)}};
+      if (!failure.empty())
+        entries.emplace_back("failure", postprocess::json_string(failure));
+      postprocess::write_run_summary(output.directory + "/run_summary.json",
+                                     entries);
+
+      // The plot: energies, forces and the Newton iterations per step.
+      const auto ends_with = [](const std::string &text,
+                                const std::string &suffix) {
+        return text.size() >= suffix.size() &&
+               text.compare(text.size() - suffix.size(),
+                            suffix.size(),
+                            suffix) == 0;
+      };
+      postprocess::PlotPanel energy{"Internal energy", "energy (J)", {}};
+      postprocess::PlotPanel forces{"Reactions and forces", "force (kN)", {}};
+      postprocess::PlotPanel newton_panel{"Newton iterations per load step",
+                                          "iterations",
+                                          {"newton_iterations"}};
+      for (const std::string &column : columns)
+        {
+          if (ends_with(column, "internal_energy"))
+            energy.columns.push_back(column);
+          if (ends_with(column, "_force") || ends_with(column, "_force_x") ||
+              ends_with(column, "_force_y") || ends_with(column, "_force_z"))
+            forces.columns.push_back(column);
+        }
+      std::vector<postprocess::PlotPanel> panels;
+      for (const postprocess::PlotPanel &panel :
+           {energy, forces, newton_panel})
+        if (!panel.columns.empty())
+          panels.push_back(panel);
+      postprocess::write_time_history_plot(output.directory +
+                                             "/time_history.csv",
+                                           output.directory +
+                                             "/time_history.svg",
+                                           panels,
+                                           "pseudo-time t (-)");
     }
   } // namespace simulation
 } // namespace rubberdyn

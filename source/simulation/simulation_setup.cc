@@ -12,6 +12,7 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
+#include <iomanip>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -25,34 +26,50 @@ namespace rubberdyn
     namespace setup
     {
       std::vector<elements::ElementGroup>
-      element_groups(const Model &model)
+      element_groups(const Model                       &model,
+                     const parameters::TimeIntegration &time_integration)
       {
-        // The entry a hull collapse's message names: the part's own, if it
-        // has one; else, with several deformable F-bar parts, both the
-        // part's and the model's, so that the message tells the part (the
-        // model-wide one alone would leave the user to find it).
         unsigned int n_fbar_parts = 0;
         for (const Part &part : model.parts)
           if (!part.rigid && part.formulation == elements::Formulation::fbar)
             ++n_fbar_parts;
+        const std::string model_entry = "Time integration/F-bar stabilization";
         std::vector<elements::ElementGroup> groups;
         // A rigid part's group has no cells: no element forces, no step.
         for (const Part &part : model.parts)
           {
+            const bool fbar =
+              !part.rigid && part.formulation == elements::Formulation::fbar;
+            const double beta =
+              fbar ? part.fbar_stabilization.value_or(
+                       time_integration.fbar_stabilization) :
+                     0.;
+            // The entry a hull collapse's message names: the part's own,
+            // if it has one; else, with several deformable F-bar parts,
+            // both the part's and the model's (the model-wide one alone
+            // would leave the user to find the part).
             const std::string part_entry =
               "Parts/" + part.name + "/F-bar stabilization";
-            std::string entry = elements::model_fbar_stabilization_entry;
+            std::string entry = model_entry;
             if (part.fbar_stabilization)
               entry = part_entry;
             else if (n_fbar_parts > 1)
-              entry = part_entry + " (this part) or " + entry +
+              entry = part_entry + " (this part) or " + model_entry +
                       " (every part without its own)";
+            // 0.03 is where the stabilisation starts to hold the hull
+            // instability in the drop test (doc/theory.md 8.1).
+            std::ostringstream advice;
+            if (beta < 0.03)
+              advice << "set " << entry << " to 0.03 or more";
+            else
+              advice << "raise " << entry << " above "
+                     << std::setprecision(3) << beta;
             groups.push_back(
               {part.rigid ? std::set<types::material_id>() : part.material_ids,
                part.law.get(),
                part.formulation,
-               part.fbar_stabilization,
-               entry});
+               beta,
+               advice.str()});
           }
         return groups;
       }
@@ -66,7 +83,6 @@ namespace rubberdyn
         settings.bulk_viscosity_linear = time_integration.bulk_viscosity_linear;
         settings.bulk_viscosity_quadratic =
           time_integration.bulk_viscosity_quadratic;
-        settings.fbar_stabilization = time_integration.fbar_stabilization;
         return settings;
       }
 

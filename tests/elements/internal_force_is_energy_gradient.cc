@@ -87,8 +87,10 @@ main(int argc, char **argv)
            {elements::Formulation::displacement, 0.}})
       {
         elements::SolidHexElements hexes;
-        hexes.initialize(dof_handler, partitioner, {{{0}, law, formulation}},
-                         {0.06, 1.5, stabilization});
+        hexes.initialize(dof_handler,
+                         partitioner,
+                         {{{0}, law, formulation, stabilization}},
+                         {0.06, 1.5});
         const std::vector<double> no_scaling(hexes.n_elements(), 1.);
         VectorType                u(u0), v(partitioner), f(partitioner),
           scratch(partitioner);

@@ -115,8 +115,8 @@ main(int argc, char **argv)
       elements::SolidHexElements hexes;
       hexes.initialize(dof_handler,
                        partitioner,
-                       {{{0}, c.law, c.formulation}},
-                       {0.06, 1.5, c.stabilization, 0.});
+                       {{{0}, c.law, c.formulation, c.stabilization}},
+                       {0.06, 1.5, 0.});
       const std::vector<unsigned int> n_cut = hexes.cut_sections({plane});
       out() << c.name << ": cut elements " << n_cut[0] << std::endl;
       check(n_cut[0] == 2, "the plane cuts the two cells of the middle column");
@@ -261,7 +261,7 @@ main(int argc, char **argv)
     hexes.initialize(dof_handler,
                      partitioner,
                      {{{0}, &rubber, elements::Formulation::fbar}},
-                     {0.06, 1.5, 0., 0.});
+                     {0.06, 1.5, 0.});
     Tensor<1, 3> z;
     z[2] = 1.;
     bool refused = false;

@@ -69,12 +69,11 @@ main(int argc, char **argv)
     double worst = 0.;
     for (const double beta : betas)
       {
-        elements::ElementSettings settings;
-        settings.fbar_stabilization = beta;
-        elements::SolidHexElements hexes;
+        const elements::ElementSettings settings;
+        elements::SolidHexElements      hexes;
         hexes.initialize(dof_handler,
                          partitioner,
-                         {{{0}, &rubber, elements::Formulation::fbar}},
+                         {{{0}, &rubber, elements::Formulation::fbar, beta}},
                          settings);
         VectorType u(partitioner), v(partitioner), f(partitioner);
         elements::ElementStepResult result;
@@ -158,11 +157,10 @@ main(int argc, char **argv)
       elements::ElementSettings settings;
       settings.bulk_viscosity_linear    = 0.;
       settings.bulk_viscosity_quadratic = 0.;
-      settings.fbar_stabilization       = beta;
       elements::SolidHexElements hexes;
       hexes.initialize(dof_handler,
                        partitioner,
-                       {{{0}, &rubber, elements::Formulation::fbar}},
+                       {{{0}, &rubber, elements::Formulation::fbar, beta}},
                        settings);
       const std::vector<double> no_scaling(hexes.n_elements(), 1.);
       VectorType u(u0), v(v0), f(partitioner), mass(partitioner);

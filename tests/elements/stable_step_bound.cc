@@ -187,12 +187,11 @@ main(int argc, char **argv)
             std::make_shared<Utilities::MPI::Partitioner>(
               dof_handler.locally_owned_dofs(),
               MPI_COMM_SELF);
-          elements::ElementSettings settings;
-          settings.fbar_stabilization = element.stabilization;
-          elements::SolidHexElements hexes;
+          const elements::ElementSettings settings;
+          elements::SolidHexElements      hexes;
           hexes.initialize(dof_handler,
                            partitioner,
-                           {{{0}, law, element.formulation}},
+                           {{{0}, law, element.formulation, element.stabilization}},
                            settings);
           VectorType mass(partitioner);
           hexes.add_lumped_mass(mass, {1.});

@@ -131,8 +131,8 @@ main(int argc, char **argv)
       // No collapse check: the perturbed pre-deformation is legitimate.
       hexes.initialize(dof_handler,
                        partitioner,
-                       {{{0}, c.law, c.formulation}},
-                       {0.06, 1.5, c.stabilization, 0.});
+                       {{{0}, c.law, c.formulation, c.stabilization}},
+                       {0.06, 1.5, 0.});
       const std::vector<double> no_scaling(hexes.n_elements(), 1.);
       VectorType                u(u0), v(partitioner), f(partitioner);
       const auto                force = [&](const VectorType &displacement) {

@@ -33,6 +33,7 @@
 
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 
 #include <string>
@@ -77,7 +78,8 @@ namespace
     elements::SolidHexElements hexes;
     hexes.initialize(model.dof_handler,
                      model.partitioner,
-                     simulation::setup::element_groups(model),
+                     simulation::setup::element_groups(
+                       model, parameters::TimeIntegration()),
                      elements::ElementSettings());
     const std::vector<double>   no_scaling(model.triangulation.n_active_cells(),
                                          1.);

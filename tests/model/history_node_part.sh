@@ -12,6 +12,7 @@
 #  - corner_plate: the plate's node at the same point does not move (0);
 #  - without a part the same point is refused (tests/bad_input/
 #    history_node_two_parts.prm).
+#  - time_history.svg has a History nodes panel with their columns.
 # Usage: history_node_part.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
@@ -67,3 +68,12 @@ awk -F, '
   END {
     printf "%d rows: the block'"'"'s corner at %.6g mm at the end (-t to %.2g mm), the plate'"'"'s node at the same point moved %.2g mm\n", n, last_z, block_error, plate_moved
     exit (n < 10 || block_error > 1e-9 || plate_moved != 0 || last_z > -0.009) }' block/time_history.csv
+
+# The plot has a panel of the history nodes (doc/model.md, "What it
+# writes"), with the six columns of the two nodes in its legend.
+svg=block/time_history.svg
+grep -q '>History nodes</text>' "$svg" || { echo "time_history.svg has no History nodes panel"; exit 1; }
+for column in corner_block_displacement_x corner_block_displacement_z corner_plate_displacement_y; do
+  grep -q ">$column</text>" "$svg" || { echo "time_history.svg has no curve $column"; exit 1; }
+done
+echo "time_history.svg: a History nodes panel with the nodes' displacements"

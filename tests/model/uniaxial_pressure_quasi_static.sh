@@ -68,3 +68,22 @@ awk -F, '
     exit (rows != 20 || worst > 0.002 || worst_load > 2e-8 || worst_balance > 1e-8)
   }' $name/time_history.csv
 bash "$source_dir/tests/model/check_newton_log.sh" log.txt 1e-3 1e4 5
+
+# run_summary.json and time_history.svg of the quasi-static run (issue 43,
+# the newcomer's path: the explicit run had them, this one did not): the
+# summary's counts are those of the history (a row per converged load step
+# after the one at t = 0, the Newton iterations summed over them) and the
+# log's "Finished:" line; the plot has the Newton panel.
+summary=$name/run_summary.json
+value() { sed -n "s/^ *\"$1\": \\([^,]*\\),\\{0,1\\}$/\\1/p" "$summary"; }
+rows=$(awk -F, 'NR > 1 { n++ } END { print n - 1 }' $name/time_history.csv)
+newton=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+                  NR > 2 { n += $c["newton_iterations"] } END { print n }' $name/time_history.csv)
+logged=$(sed -n 's/^Finished: .* \([0-9]*\) Newton iterations.*/\1/p' log.txt)
+echo "run_summary.json: load_steps $(value load_steps) (history rows $rows), newton_iterations $(value newton_iterations) (history $newton, log $logged), reached_end $(value reached_end)"
+[ "$(value load_steps)" = "$rows" ] && [ "$(value newton_iterations)" = "$newton" ] &&
+  [ "$(value newton_iterations)" = "$logged" ] && [ "$(value reached_end)" = true ] &&
+  [ "$(value end_time)" = 1 ] || { echo "run_summary.json disagrees"; exit 1; }
+grep -q '>Newton iterations per load step</text>' $name/time_history.svg &&
+  grep -q '>press_force_z</text>' $name/time_history.svg ||
+  { echo "time_history.svg lacks the Newton panel or a force"; exit 1; }

@@ -151,7 +151,7 @@ namespace
     hexes.initialize(dof_handler,
                      partitioner,
                      {{{1}, &rubber, elements::Formulation::fbar}},
-                     {0.06, 1.5, 0., 0.25});
+                     {0.06, 1.5, 0.25});
     const std::vector<double>   no_scaling(hexes.n_elements(), 1.);
     elements::ElementStepResult result;
     hexes.compute_forces(u, v, no_scaling, f, result);

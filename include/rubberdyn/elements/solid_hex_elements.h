@@ -13,7 +13,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -227,11 +226,6 @@ namespace rubberdyn
        (model/element_formulation.h). */
     using model::Formulation;
 
-    /** The input entry of the model-wide beta of the F-bar stabilisation
-     * (ElementSettings::fbar_stabilization), named in messages. */
-    inline constexpr char model_fbar_stabilization_entry[] =
-      "Time integration/F-bar stabilization";
-
     /**
      * One part of a model as the element layer sees it: the cells whose
      * material id is in @p material_ids get elements of @p formulation
@@ -241,35 +235,40 @@ namespace rubberdyn
     {
       /**
        * The group of @p material_ids with @p law and @p formulation; for
-       * F-bar, a beta of its own (@p fbar_stabilization, set by the input
-       * entry @p fbar_stabilization_entry) or none (the settings' beta).
+       * F-bar, the beta of its volumetric stabilisation
+       * @p fbar_stabilization (-, final: the caller has resolved a part's
+       * own value against a model-wide one) and the advice a hull
+       * collapse's message ends with (@p collapse_advice, composed by the
+       * caller, who knows the input entries; empty: none).
        */
-      ElementGroup(
-        std::set<types::material_id>       material_ids,
-        const materials::MaterialModel<3> *law,
-        Formulation                        formulation,
-        std::optional<double>              fbar_stabilization = std::nullopt,
-        std::string fbar_stabilization_entry = model_fbar_stabilization_entry)
+      ElementGroup(std::set<types::material_id>       material_ids,
+                   const materials::MaterialModel<3> *law,
+                   Formulation                        formulation,
+                   double                             fbar_stabilization = 0.,
+                   std::string                        collapse_advice = "")
         : material_ids(std::move(material_ids))
         , law(law)
         , formulation(formulation)
         , fbar_stabilization(fbar_stabilization)
-        , fbar_stabilization_entry(std::move(fbar_stabilization_entry))
+        , collapse_advice(std::move(collapse_advice))
       {}
 
       std::set<types::material_id>       material_ids;
       const materials::MaterialModel<3> *law;
       Formulation                        formulation;
       /**
-       * F-bar only: the group's own beta of the volumetric stabilisation
-       * (-); empty: ElementSettings::fbar_stabilization.
+       * F-bar only: stiffness of the volumetric stabilisation relative to
+       * the law's small-strain bulk modulus, beta in kappa = beta K (-); 0:
+       * none. It resists Gauss-point volume changes at a fixed centre
+       * volume, which F-bar otherwise leaves to the shear stiffness alone.
        */
-      std::optional<double> fbar_stabilization;
+      double fbar_stabilization;
       /**
-       * The input entry (or entries, as one phrase) that sets the group's
-       * beta, named in the message of an F-bar hull collapse.
+       * What the user should change after an F-bar hull collapse of this
+       * group, e.g. "set Parts/rubber/F-bar stabilization to 0.03 or
+       * more"; appended to the failure's message.
        */
-      std::string fbar_stabilization_entry;
+      std::string collapse_advice;
     };
 
     /** Parameters of the element layer, common to all groups. */
@@ -279,13 +278,6 @@ namespace rubberdyn
       double bulk_viscosity_linear = 0.06;
       /** Quadratic bulk viscosity coefficient (LS-DYNA Q1, default 1.5). */
       double bulk_viscosity_quadratic = 1.5;
-      /**
-       * F-bar only: stiffness of the volumetric stabilisation relative to the
-       * law's small-strain bulk modulus, beta in kappa = beta K (-); 0: none.
-       * It resists Gauss-point volume changes at a fixed centre volume,
-       * which F-bar otherwise leaves to the shear stiffness alone.
-       */
-      double fbar_stabilization = 0.;
       /**
        * F-bar only: an element fails (FailureKind::fbar_collapse) when the
        * volume ratio $r_q = J_q/J_0$ of one of its Gauss points falls below
@@ -590,8 +582,8 @@ namespace rubberdyn
         double stabilization;
         /** kappa = beta K of the F-bar stabilisation (GPa); 0: none. */
         double stabilization_modulus;
-        /** The input entry that sets beta (ElementGroup). */
-        std::string stabilization_entry;
+        /** What to change after a hull collapse (ElementGroup). */
+        std::string collapse_advice;
       };
 
       /**

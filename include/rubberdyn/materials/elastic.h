@@ -1,8 +1,7 @@
 #ifndef rubberdyn_materials_elastic_h
 #define rubberdyn_materials_elastic_h
 
-#include <rubberdyn/materials/finite_strain_j2.h>
-#include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/materials/isotropic_metal.h>
 
 namespace rubberdyn
 {
@@ -15,7 +14,7 @@ namespace rubberdyn
      * ratio. It is identical to `J2 plasticity` below its yield stress.
      */
     template <int dim>
-    class Elastic : public MaterialModel<dim>
+    class Elastic : public IsotropicMetal<dim>
     {
     public:
       /** Read the constants from the current subsection (path @p path). */
@@ -33,29 +32,12 @@ namespace rubberdyn
       std::string
       name() const override;
 
-      double
-      density() const override;
-
       void
       evaluate(const Tensor<2, dim> &         F,
                const ArrayView<const double> &state_old,
                const ArrayView<double> &      state_new,
                const bool                     compute_tangent,
                MaterialResponse<dim> &        response) const override;
-
-      double
-      reference_wave_speed() const override;
-
-      double
-      shear_modulus() const override;
-
-      double
-      bulk_modulus() const override;
-
-      /** The density, G, K and the wave speed (see
-       * finite_strain_j2::derived_constants()). */
-      std::vector<DerivedConstant>
-      derived_constants() const override;
 
       void
       print_constants(std::ostream &out) const override;
@@ -65,7 +47,7 @@ namespace rubberdyn
       create_stress_kernel() const override;
 
     private:
-      finite_strain_j2::ElasticModuli moduli;
+      using IsotropicMetal<dim>::moduli;
     };
   } // namespace materials
 } // namespace rubberdyn

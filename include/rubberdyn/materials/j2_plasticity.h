@@ -1,9 +1,8 @@
 #ifndef rubberdyn_materials_j2_plasticity_h
 #define rubberdyn_materials_j2_plasticity_h
 
-#include <rubberdyn/materials/finite_strain_j2.h>
 #include <rubberdyn/materials/hardening_curve.h>
-#include <rubberdyn/materials/material_model.h>
+#include <rubberdyn/materials/isotropic_metal.h>
 
 namespace rubberdyn
 {
@@ -16,7 +15,7 @@ namespace rubberdyn
      * finite_strain_j2, with the elastic law of `Elastic`.
      */
     template <int dim>
-    class J2Plasticity : public MaterialModel<dim>
+    class J2Plasticity : public IsotropicMetal<dim>
     {
     public:
       /** Read the constants from the current subsection (path @p path). */
@@ -34,9 +33,6 @@ namespace rubberdyn
 
       std::string
       name() const override;
-
-      double
-      density() const override;
 
       unsigned int
       n_state_variables() const override;
@@ -56,15 +52,6 @@ namespace rubberdyn
                const bool                     compute_tangent,
                MaterialResponse<dim> &        response) const override;
 
-      double
-      reference_wave_speed() const override;
-
-      double
-      shear_modulus() const override;
-
-      double
-      bulk_modulus() const override;
-
       /**
        * The elastic constants (see finite_strain_j2::derived_constants()),
        * the yield stress, the steepest hardening slope H and the return
@@ -81,7 +68,7 @@ namespace rubberdyn
       create_stress_kernel() const override;
 
     private:
-      finite_strain_j2::ElasticModuli moduli;
+      using IsotropicMetal<dim>::moduli;
       HardeningCurve                  hardening;
     };
   } // namespace materials

@@ -133,6 +133,18 @@ namespace rubberdyn
       log_model(std::ostream &log) const;
 
       /**
+       * On rank 0: run_summary.json (sizes, load steps, Newton, linear and
+       * cut-back iterations, wall time, and @p failure, empty for a run
+       * that reached its end) and time_history.svg (the internal energy,
+       * the reactions and forces, the Newton iterations per step over the
+       * pseudo-time) from the written @p columns.
+       */
+      void
+      write_summary_and_plot(const std::vector<std::string> &columns,
+                             const double                    wall_seconds,
+                             const std::string              &failure) const;
+
+      /**
        * Whether the rigid surfaces follow their Velocity function over
        * the pseudo-time (Scheme = quasi-static), or stand still (the load
        * path of a preload: their motion is the explicit run's).

@@ -45,17 +45,21 @@ namespace rubberdyn
     {
       /**
        * One element group per part, in the parts' order: its material ids
-       * (none for a rigid part: no element forces), law and formulation.
-       * The entry a group's F-bar hull collapse names is the part's own
-       * `Parts/<name>/F-bar stabilization` if it sets one; else, in a model
-       * of several deformable F-bar parts, that one and the model-wide
-       * `Time integration/F-bar stabilization`, so that the message tells
-       * the part; else the model-wide one.
+       * (none for a rigid part: no element forces), law and formulation,
+       * and the part's final F-bar beta: its own `Parts/<name>/F-bar
+       * stabilization` if it sets one, else the model-wide `Time
+       * integration/F-bar stabilization` of @p time_integration (0 for
+       * parts that are not F-bar). This is the one place the two are
+       * merged. The advice a group's F-bar hull collapse ends with names
+       * the part's own entry if it sets one; else, in a model of several
+       * deformable F-bar parts, that one and the model-wide one, so that
+       * the message tells the part; else the model-wide one.
        */
       std::vector<elements::ElementGroup>
-      element_groups(const Model &model);
+      element_groups(const Model                       &model,
+                     const parameters::TimeIntegration &time_integration);
 
-      /** Bulk viscosity and F-bar settings from `Time integration`. */
+      /** Bulk viscosity settings from `Time integration`. */
       elements::ElementSettings
       element_settings(const parameters::TimeIntegration &time_integration);
 
