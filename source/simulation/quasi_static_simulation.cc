@@ -254,6 +254,46 @@ namespace rubberdyn
         bodies,
         bodies_follow_load_path(),
         rigid_parts);
+      set_force_scale();
+    }
+
+
+
+    void
+    QuasiStaticSimulation::set_force_scale()
+    {
+      // Each part's volume and number of cells, over the ranks.
+      std::vector<double> volume(model.parts.size(), 0.),
+        n_cells(model.parts.size(), 0.);
+      for (const auto &cell : model.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int p =
+              model.part_of_material_id(cell->material_id());
+            volume[p] += cell->measure();
+            n_cells[p] += 1.;
+          }
+      Utilities::MPI::sum(ArrayView<const double>(volume),
+                          model.comm,
+                          ArrayView<double>(volume));
+      Utilities::MPI::sum(ArrayView<const double>(n_cells),
+                          model.comm,
+                          ArrayView<double>(n_cells));
+      double force_scale = 0.;
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (!model.parts[p].rigid && n_cells[p] > 0.)
+          {
+            const double h = std::cbrt(volume[p] / n_cells[p]);
+            const double f = model.parts[p].law->shear_modulus() * h * h;
+            if (force_scale_part == numbers::invalid_unsigned_int ||
+                f < force_scale)
+              {
+                force_scale      = f;
+                force_scale_part = p;
+                force_scale_size = h;
+              }
+          }
+      newton->set_force_scale(force_scale);
     }
 
 
@@ -388,6 +428,15 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
+      log << "  Converged: residual <= " << q.residual_tolerance
+          << " x max(reactions, loads, force scale " << newton->force_scale()
+          << " kN";
+      if (force_scale_part != numbers::invalid_unsigned_int)
+        log << " = G h^2 of " << model.parts[force_scale_part].name << ", G "
+            << model.parts[force_scale_part].law->shear_modulus() << " GPa, h "
+            << force_scale_size << " mm";
+      log << ") or <= " << q.residual_floor << " kN, and energy <= "
+          << q.energy_tolerance << " x the step's first" << std::endl;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].rigid)
           {

@@ -1,6 +1,8 @@
 #ifndef rubberdyn_simulation_quasi_static_simulation_h
 #define rubberdyn_simulation_quasi_static_simulation_h
 
+#include <deal.II/base/types.h>
+
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/simulation/preload.h>
@@ -158,6 +160,26 @@ namespace rubberdyn
        */
       void
       cut_pretension_sections(elements::SolidHexElements &hexes);
+
+      /**
+       * Set the solver's force scale (time_integration::QuasiStaticSolver::
+       * set_force_scale()) to the smallest G h^2 over the deformable parts:
+       * G the law's small-strain shear modulus (GPa, kN/mm^2), h the
+       * part's mean cell size, the cube root of its volume over its number
+       * of cells (mm). G h^2 is the force that shears one of its elements
+       * by a unit strain, so that a residual of Residual tolerance times it
+       * moves a node of the softest part by about Residual tolerance times
+       * its element size. No deformable part: 0. Collective.
+       */
+      void
+      set_force_scale();
+
+      /**
+       * The part that sets the force scale (numbers::invalid_unsigned_int
+       * if none) and its mean cell size h (mm).
+       */
+      unsigned int force_scale_part = numbers::invalid_unsigned_int;
+      double       force_scale_size = 0.;
 
       Model                                                  &model;
       parameters::TimeIntegration                             time_integration;

@@ -241,6 +241,29 @@ namespace rubberdyn
       linear_solver_name() const;
 
       /**
+       * Set the model's force scale F_m (kN, default 0): the residual
+       * criterion of a Newton iteration is
+       * @f[
+       *   \|r_\text{free}\| \le \text{tol}\,
+       *   \max(\|R\|, \|F_\text{load}\|, F_m)
+       * @f]
+       * (tol the Residual tolerance, R the reactions, F_load the loads),
+       * or @f$\|r_\text{free}\|@f$ at most the Residual floor. Where the
+       * reactions and loads are nearly zero (a contact gap that has just
+       * closed) the bare relative criterion asks for a residual below the
+       * round-off of the element and contact forces, which no cut-back
+       * can reach; F_m bounds the demand by the model's own scale.
+       * simulation::QuasiStaticSimulation sets F_m = G h^2 of the softest
+       * deformable part (doc/quasi_static.md, "Convergence").
+       */
+      void
+      set_force_scale(const double force_scale);
+
+      /** The force scale of set_force_scale() (kN). */
+      double
+      force_scale() const;
+
+      /**
        * Evaluate the state at the current time (forces, reactions, energy)
        * without solving, and accept the contributions' state there (the
        * friction state the first load step starts from).
