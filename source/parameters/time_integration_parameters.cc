@@ -87,23 +87,22 @@ namespace rubberdyn
         prm.declare_entry("Residual tolerance", "1e-8", Patterns::Double(0.),
                           "Convergence: the norm of the out-of-balance "
                           "force on the free dofs (kN) at most this times "
-                          "the largest of the norms of the reactions and "
-                          "of the loads and the model's force scale G h^2 "
-                          "(kN: the softest deformable part's shear "
-                          "modulus G, GPa, times its mean element size h "
-                          "squared, mm^2; the log prints it), so that where "
-                          "the reactions are nearly zero (a gap that has "
-                          "just closed) the residual need not fall below "
-                          "round-off (-).");
+                          "the larger of the norms of the reactions and of "
+                          "the loads (-), or at most the residual's "
+                          "round-off eps (K + 4G/3) h^2 sqrt(dofs) (kN, of "
+                          "the stiffest deformable part: K + 4G/3 in GPa, "
+                          "its mean element size h in mm; the log prints "
+                          "it), which the relative demand falls below "
+                          "where the reactions are nearly zero (a gap that "
+                          "has just closed).");
         prm.declare_entry("Energy tolerance", "1e-14", Patterns::Double(0.),
                           "Convergence, also required: |du . r| of the last "
                           "Newton correction at most this times the step's "
                           "first |du . r| (-; the energy norm, J).");
         prm.declare_entry("Residual floor", "1e-12", Patterns::Double(0.),
                           "A residual norm below this (kN) counts as "
-                          "converged whatever the reactions (a model "
-                          "without deformable parts, whose force scale is "
-                          "0).");
+                          "converged whatever the reactions (an unloaded "
+                          "model), with the energy criterion waived.");
         prm.declare_entry("Line search", "true", Patterns::Bool(),
                           "Damp each Newton correction by backtracking "
                           "(halving, at most 6 times) until the residual "

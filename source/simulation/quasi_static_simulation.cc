@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -31,6 +32,18 @@ namespace rubberdyn
   namespace simulation
   {
     using namespace model;
+
+    namespace
+    {
+      /** K + 4 G / 3 of @p part's law (GPa): its stiffest response. */
+      double
+      dilatational_modulus(const Part &part)
+      {
+        return part.law->bulk_modulus() + 4. / 3. * part.law->shear_modulus();
+      }
+    } // namespace
+
+
 
     void
     QuasiStaticSimulation::check_supported(
@@ -254,13 +267,13 @@ namespace rubberdyn
         bodies,
         bodies_follow_load_path(),
         rigid_parts);
-      set_force_scale();
+      set_roundoff_floor();
     }
 
 
 
     void
-    QuasiStaticSimulation::set_force_scale()
+    QuasiStaticSimulation::set_roundoff_floor()
     {
       // Each part's volume and number of cells, over the ranks.
       std::vector<double> volume(model.parts.size(), 0.),
@@ -279,21 +292,22 @@ namespace rubberdyn
       Utilities::MPI::sum(ArrayView<const double>(n_cells),
                           model.comm,
                           ArrayView<double>(n_cells));
-      double force_scale = 0.;
+      double element_force = 0.;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (!model.parts[p].rigid && n_cells[p] > 0.)
           {
             const double h = std::cbrt(volume[p] / n_cells[p]);
-            const double f = model.parts[p].law->shear_modulus() * h * h;
-            if (force_scale_part == numbers::invalid_unsigned_int ||
-                f < force_scale)
+            const double f = dilatational_modulus(model.parts[p]) * h * h;
+            if (f > element_force)
               {
-                force_scale      = f;
-                force_scale_part = p;
-                force_scale_size = h;
+                element_force = f;
+                roundoff_part = p;
+                roundoff_size = h;
               }
           }
-      newton->set_force_scale(force_scale);
+      newton->set_roundoff_floor(
+        std::numeric_limits<double>::epsilon() * element_force *
+        std::sqrt(static_cast<double>(model.dof_handler.n_dofs())));
     }
 
 
@@ -429,14 +443,15 @@ namespace rubberdyn
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
       log << "  Converged: residual <= " << q.residual_tolerance
-          << " x max(reactions, loads, force scale " << newton->force_scale()
-          << " kN";
-      if (force_scale_part != numbers::invalid_unsigned_int)
-        log << " = G h^2 of " << model.parts[force_scale_part].name << ", G "
-            << model.parts[force_scale_part].law->shear_modulus() << " GPa, h "
-            << force_scale_size << " mm";
-      log << ") or <= " << q.residual_floor << " kN, and energy <= "
-          << q.energy_tolerance << " x the step's first" << std::endl;
+          << " x max(reactions, loads) or <= "
+          << std::max(newton->roundoff_floor(), q.residual_floor) << " kN";
+      if (roundoff_part != numbers::invalid_unsigned_int)
+        log << " (round-off: eps (K + 4G/3) h^2 sqrt(dofs) of "
+            << model.parts[roundoff_part].name << ", K + 4G/3 "
+            << dilatational_modulus(model.parts[roundoff_part]) << " GPa, h "
+            << roundoff_size << " mm)";
+      log << ", and energy <= " << q.energy_tolerance << " x the step's first"
+          << std::endl;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].rigid)
           {

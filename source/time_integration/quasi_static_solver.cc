@@ -210,18 +210,30 @@ namespace rubberdyn
                const bool                           predictor);
 
       /**
-       * What the Residual tolerance multiplies (kN): the largest of the
-       * norms of the reactions and of the loads of @p r, and of the
-       * model's force scale, which keeps the criterion meaningful where
-       * both are nearly zero (a gap that has just closed) instead of
-       * demanding a residual below round-off; at least the Residual floor
-       * (no division by zero).
+       * What the Residual tolerance multiplies (kN): the larger of the
+       * norms of the reactions and of the loads of @p r, at least the
+       * Residual floor (no division by zero).
        */
       double
       residual_scale(const Residual &r) const
       {
-        return std::max(
-          {r.reaction_norm, r.load_norm, force_scale, settings.residual_floor});
+        return std::max({r.reaction_norm, r.load_norm, settings.residual_floor});
+      }
+
+      /**
+       * The force criterion: the residual of @p r at most @p tolerance
+       * times residual_scale(), or at most the Residual floor, or at most
+       * the round-off of the residual (roundoff_floor): where the
+       * reactions and loads are nearly zero (a contact gap that has just
+       * closed) the relative demand falls below what the element and
+       * contact forces can resolve, and no cut-back can meet it.
+       */
+      bool
+      residual_converged(const Residual &r, const double tolerance) const
+      {
+        return r.free_norm <= settings.residual_floor ||
+               r.free_norm <= roundoff_floor ||
+               r.free_norm <= tolerance * residual_scale(r);
       }
 
       /** Whether the assembled tangent is symmetric (CG may solve it). */
@@ -267,10 +279,10 @@ namespace rubberdyn
       std::vector<model::ForceContribution *> loads;
       parameters::QuasiStatic                 settings;
       /**
-       * The model's force scale (kN), the floor of the residual
-       * criterion's scale (QuasiStaticSolver::set_force_scale()).
+       * The round-off of the residual (kN): below it the force criterion
+       * counts as met (QuasiStaticSolver::set_roundoff_floor()).
        */
-      double force_scale = 0.;
+      double roundoff_floor = 0.;
       MPI_Comm                                comm;
       bool                                    use_direct;
 
@@ -1351,19 +1363,19 @@ namespace rubberdyn
 
 
     void
-    QuasiStaticSolver::set_force_scale(const double force_scale)
+    QuasiStaticSolver::set_roundoff_floor(const double roundoff_floor)
     {
-      AssertThrow(force_scale >= 0. && std::isfinite(force_scale),
-                  ExcMessage("the force scale must be finite and >= 0"));
-      impl->force_scale = force_scale;
+      AssertThrow(roundoff_floor >= 0. && std::isfinite(roundoff_floor),
+                  ExcMessage("the round-off floor must be finite and >= 0"));
+      impl->roundoff_floor = roundoff_floor;
     }
 
 
 
     double
-    QuasiStaticSolver::force_scale() const
+    QuasiStaticSolver::roundoff_floor() const
     {
-      return impl->force_scale;
+      return impl->roundoff_floor;
     }
 
 
@@ -1733,10 +1745,10 @@ namespace rubberdyn
       const double ratio_now = r.free_norm / scale_now;
       const bool   holds =
         !r.failed &&
-        (r.free_norm <= settings.residual_floor ||
-         ratio_now <=
-           std::max(10. * ratio, 1e-3 * settings.residual_tolerance) ||
-         (penalty_updates >= 3 && ratio_now <= settings.residual_tolerance));
+        (I.residual_converged(
+           r, std::max(10. * ratio, 1e-3 * settings.residual_tolerance)) ||
+         (penalty_updates >= 3 &&
+          I.residual_converged(r, settings.residual_tolerance)));
       if (root && !holds)
         log << "    penalty stiffness of this state: residual "
             << std::scientific << std::setprecision(3) << r.free_norm
@@ -1790,8 +1802,7 @@ namespace rubberdyn
                                  std::string())
                 << ", " << std::fixed << std::setprecision(2) << wall() << " s"
                 << std::defaultfloat << std::setprecision(6) << std::endl;
-          bool residual_ok =
-            r.free_norm <= s.residual_floor || ratio <= s.residual_tolerance;
+          bool residual_ok = I.residual_converged(r, s.residual_tolerance);
           // (In a step in which nothing changes, e.g. a held load with
           // friction, even the first iteration's energy is round-off: an
           // increment at the round-off of the strain energy is converged

@@ -29,8 +29,13 @@
 #    round-off);
 #  - the preload is held: A's press force stays the preload's last value
 #    to 1e-8 relative, B's load resultant stays -p A0 = -0.05 kN to 1e-10
-#    (a dead load held: the closed form), and B's top node stays where the
-#    preload left it to 1e-9 mm.
+#    (a dead load held: the closed form), and the top node (10, 10, 10)
+#    stays where the preload left it to 1e-9 mm.
+# Measured (1 and 2 ranks): A's force -0.0818531 kN against -0.0818745
+# (0.026 %), strain energy 0.0760395 J against 0.0760612 J (0.028 %);
+# over 50 rows (0.5 ms) kinetic / strain energy at most 2.2e-19 (A) and
+# 5.1e-20 (B), the first row's internal energy, the held forces and the
+# top node equal to the preload's in every printed digit.
 # Usage: displacement_preload_handoff.sh EXECUTABLE SOURCE_DIR NPROC
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=$3
@@ -116,7 +121,7 @@ at_rest() {
       ++rows
     }
     END {
-      printf "%d explicit rows: strain energy of the preload %.6g J, first row's / it - 1 %.1e, kinetic energy / it at most %.1e, %s / %.6g - 1 at most %.1e, top node moved %.1e mm\n", rows, u, first, ke, column, force, drift, move
+      printf "%d explicit rows: strain energy of the preload %.6g J, first row / it - 1 %.1e, kinetic energy / it at most %.1e, %s / %.6g - 1 at most %.1e, top node moved %.1e mm\n", rows, u, first, ke, column, force, drift, move
       exit (rows < 40 || first > 1e-9 || ke > 1e-6 || drift > bound || move > 1e-9)
     }' handoff/preload/time_history.csv "$1"
 }

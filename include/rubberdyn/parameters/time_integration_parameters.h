@@ -51,15 +51,15 @@ namespace rubberdyn
       unsigned int max_cutbacks = 10;
       /**
        * ||residual of the free dofs|| <= this * max(||reactions||,
-       * ||loads||, the model's force scale G h^2) (-; the scale in kN,
-       * time_integration::QuasiStaticSolver::set_force_scale()).
+       * ||loads||) (-), or <= the residual's round-off (kN,
+       * time_integration::QuasiStaticSolver::set_roundoff_floor()).
        */
       double residual_tolerance = 1e-8;
       /** |du . r| <= this * the step's first |du . r|. */
       double energy_tolerance = 1e-14;
       /**
-       * Residual norm (kN) always counted as converged (a model without
-       * deformable parts, whose force scale is 0).
+       * Residual norm (kN) always counted as converged (an unloaded
+       * model), the energy criterion waived.
        */
       double residual_floor = 1e-12;
       /** Whether Newton updates are damped by a backtracking line search. */

@@ -162,24 +162,28 @@ namespace rubberdyn
       cut_pretension_sections(elements::SolidHexElements &hexes);
 
       /**
-       * Set the solver's force scale (time_integration::QuasiStaticSolver::
-       * set_force_scale()) to the smallest G h^2 over the deformable parts:
-       * G the law's small-strain shear modulus (GPa, kN/mm^2), h the
-       * part's mean cell size, the cube root of its volume over its number
-       * of cells (mm). G h^2 is the force that shears one of its elements
-       * by a unit strain, so that a residual of Residual tolerance times it
-       * moves a node of the softest part by about Residual tolerance times
-       * its element size. No deformable part: 0. Collective.
+       * Set the solver's round-off floor (time_integration::
+       * QuasiStaticSolver::set_roundoff_floor()) to
+       * eps max_p (K_p + 4 G_p / 3) h_p^2 sqrt(N): eps the machine
+       * epsilon, K_p and G_p the small-strain bulk and shear moduli of
+       * deformable part p (GPa, kN/mm^2), h_p its mean cell size (the cube
+       * root of its volume over its number of cells, mm), N the number of
+       * dofs. The strain is computed from F = 1 + grad u, so it carries a
+       * round-off of eps whatever the load, and an element's nodal forces
+       * one of about eps (K + 4 G / 3) h^2 (the dilatational modulus: the
+       * stiffest response); the residual's norm sums N such errors in
+       * squares. No deformable part: 0. Collective.
        */
       void
-      set_force_scale();
+      set_roundoff_floor();
 
       /**
-       * The part that sets the force scale (numbers::invalid_unsigned_int
-       * if none) and its mean cell size h (mm).
+       * The part that sets the round-off floor
+       * (numbers::invalid_unsigned_int if none) and its mean cell size h
+       * (mm).
        */
-      unsigned int force_scale_part = numbers::invalid_unsigned_int;
-      double       force_scale_size = 0.;
+      unsigned int roundoff_part = numbers::invalid_unsigned_int;
+      double       roundoff_size = 0.;
 
       Model                                                  &model;
       parameters::TimeIntegration                             time_integration;
