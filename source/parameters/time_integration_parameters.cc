@@ -26,8 +26,12 @@ namespace rubberdyn
         "preload), then the explicit run to the End time from its "
         "converged state: displacements, material history, locked "
         "pretension sections and contact friction state, at rest but for "
-        "the parts' initial velocities (doc/quasi_static.md, \"The "
-        "hand-off\").");
+        "the parts' initial velocities. A displacement, traction or "
+        "pressure whose value at the Quasi-static end time differs from "
+        "its value at t = 0 (a ramp) is a preload: held at its value at "
+        "the Quasi-static end time in the explicit run; any other "
+        "condition is evaluated at the explicit run's t "
+        "(doc/quasi_static.md, \"The hand-off\").");
       prm.declare_entry("Quasi-static end time", "1", Patterns::Double(0.),
                         "Quasi-static scheme: the pseudo-time t at the end of "
                         "the load path (-; the t of the boundary-condition "
@@ -77,11 +81,20 @@ namespace rubberdyn
                           "step is cut back (halved).");
         prm.declare_entry("Maximum cut-backs", "10", Patterns::Integer(0),
                           "Halvings of one load step in a row (-) before "
-                          "the run ends with an error.");
+                          "the run ends with an error (which names this "
+                          "limit, or the Minimum step, whichever was "
+                          "hit).");
         prm.declare_entry("Residual tolerance", "1e-8", Patterns::Double(0.),
                           "Convergence: the norm of the out-of-balance "
                           "force on the free dofs (kN) at most this times "
-                          "the norm of the reactions (-).");
+                          "the larger of the norms of the reactions and of "
+                          "the loads (-), or at most the residual's "
+                          "round-off eps (K + 4G/3) h^2 sqrt(dofs) (kN, of "
+                          "the stiffest deformable part: K + 4G/3 in GPa, "
+                          "its mean element size h in mm; the log prints "
+                          "it), which the relative demand falls below "
+                          "where the reactions are nearly zero (a gap that "
+                          "has just closed).");
         prm.declare_entry("Energy tolerance", "1e-14", Patterns::Double(0.),
                           "Convergence, also required: |du . r| of the last "
                           "Newton correction at most this times the step's "
@@ -89,7 +102,7 @@ namespace rubberdyn
         prm.declare_entry("Residual floor", "1e-12", Patterns::Double(0.),
                           "A residual norm below this (kN) counts as "
                           "converged whatever the reactions (an unloaded "
-                          "model).");
+                          "model), with the energy criterion waived.");
         prm.declare_entry("Line search", "true", Patterns::Bool(),
                           "Damp each Newton correction by backtracking "
                           "(halving, at most 6 times) until the residual "

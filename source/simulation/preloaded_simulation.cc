@@ -1,16 +1,15 @@
 #include <deal.II/base/mpi.h>
 
-#include <rubberdyn/base/durable_files.h>
-#include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/simulation/preload.h>
 #include <rubberdyn/simulation/preloaded_simulation.h>
 #include <rubberdyn/simulation/quasi_static_simulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
-#include <sstream>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -33,46 +32,58 @@ namespace rubberdyn
 
 
 
-    void
-    PreloadedSimulation::check_continuity(const Model &model,
-                                          const double end_time)
+    std::vector<unsigned int>
+    PreloadedSimulation::hold_preloads(Model &model, const double end_time)
     {
-      // The first face centre of @p bc where the value jumps, as a message.
-      const auto jump = [&](const BoundaryCondition &bc) -> std::string {
+      // Whether a function of @p bc has another value at t = end_time than
+      // at t = 0 at a vertex or the centre of one of this rank's faces
+      // (the nodes where a displacement acts, and a point inside the face
+      // for a load that depends on the position).
+      const auto changes = [&](const BoundaryCondition &bc) -> bool {
         for (const auto &cell : model.triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const auto face : cell->face_indices())
               if (cell->face(face)->at_boundary() &&
                   bc.boundary_ids.count(cell->face(face)->boundary_id()))
-                for (const auto &function : bc.functions)
-                  {
-                    const Point<3> X     = cell->face(face)->center();
-                    const double   end   = function(X, end_time);
-                    const double   start = function(X, 0.);
-                    if (std::abs(end - start) <=
-                        1e-12 * std::max({1., std::abs(end), std::abs(start)}))
-                      continue;
-                    std::ostringstream text;
-                    text << "'quasi-static then explicit' starts the "
-                            "explicit run (t = 0) from the end of the "
-                            "load path (t = "
-                         << end_time << "), so the condition must have "
-                         << "the same value at both; at (" << X << ") it is "
-                         << end << " at t = " << end_time << " and " << start
-                         << " at t = 0 (e.g. hold it constant, or write it "
-                            "for the explicit run only)";
-                    return text.str();
-                  }
-        return "";
+                {
+                  std::vector<Point<3>> points = {cell->face(face)->center()};
+                  for (const auto v : cell->face(face)->vertex_indices())
+                    points.push_back(cell->face(face)->vertex(v));
+                  for (const auto &function : bc.functions)
+                    for (const Point<3> &X : points)
+                      {
+                        const double end   = function(X, end_time);
+                        const double start = function(X, 0.);
+                        if (std::abs(end - start) >
+                            1e-12 *
+                              std::max({1., std::abs(end), std::abs(start)}))
+                          return true;
+                      }
+                }
+        return false;
       };
-      for (const BoundaryCondition &bc : model.boundary_conditions)
-        if (bc.type == BoundaryCondition::Type::displacement ||
-            bc.type == BoundaryCondition::Type::traction ||
-            bc.type == BoundaryCondition::Type::pressure)
-          durable_files::throw_if_any(model.comm,
-                                      "Boundary conditions/" + bc.name +
-                                        "/Function expression",
-                                      jump(bc));
+      std::vector<unsigned int> held;
+      for (unsigned int c = 0; c < model.boundary_conditions.size(); ++c)
+        {
+          BoundaryCondition &bc = model.boundary_conditions[c];
+          if (bc.type != BoundaryCondition::Type::displacement &&
+              bc.type != BoundaryCondition::Type::traction &&
+              bc.type != BoundaryCondition::Type::pressure)
+            continue;
+          // (Collective: every rank holds the same conditions.)
+          if (!Utilities::MPI::logical_or(changes(bc), model.comm))
+            continue;
+          // Ramped on the load path, then held at the value it reached:
+          // the explicit run starts at rest in the preloaded equilibrium
+          // (zero prescribed velocity, an unchanged load).
+          for (auto &function : bc.functions)
+            function = [ramp = function, end_time](const Point<3> &X,
+                                                   const double) {
+              return ramp(X, end_time);
+            };
+          held.push_back(c);
+        }
+      return held;
     }
 
 
@@ -88,8 +99,8 @@ namespace rubberdyn
       , preload_parameters(
           preload_parameters_text(model_parameters, model.gravity.norm() != 0.))
       , checkpoint_directory(output.directory + "/preload/checkpoint")
+      , end_time(time_integration.quasi_static_end_time)
     {
-      check_continuity(model, time_integration.quasi_static_end_time);
       // The preload's rows go to preload/, the explicit run's to the
       // output directory. The preload is a checkpoint by itself; a restart
       // continues the explicit run from its own checkpoint (Output/
@@ -108,6 +119,11 @@ namespace rubberdyn
       if (!output.restart)
         quasi_static = std::make_unique<QuasiStaticSimulation>(
           model, time_integration, preload_output, title + " preload");
+      // The load path has taken its copies of the conditions' functions;
+      // the explicit run takes the held ones (also when it starts from
+      // the preload checkpoint, whose load path ran with the same rule).
+      held_conditions =
+        hold_preloads(model, time_integration.quasi_static_end_time);
       explicit_run = std::make_unique<ExplicitSimulation>(
         model, time_integration, explicit_output, title, model_parameters);
       explicit_run->set_restart_advice(
@@ -123,10 +139,26 @@ namespace rubberdyn
 
 
     void
+    PreloadedSimulation::log_held_conditions(std::ostream &log) const
+    {
+      if (Utilities::MPI::this_mpi_process(model.comm) != 0)
+        return;
+      for (const unsigned int c : held_conditions)
+        log << "  Boundary conditions/" << model.boundary_conditions[c].name
+            << ": a preload (its value at t = " << end_time
+            << " differs from t = 0): ramped on the load path, held at its "
+               "value at t = "
+            << end_time << " in the explicit run" << std::endl;
+    }
+
+
+
+    void
     PreloadedSimulation::check(std::ostream &log)
     {
       if (quasi_static)
         quasi_static->check(log);
+      log_held_conditions(log);
       explicit_run->check(log);
     }
 
@@ -164,6 +196,7 @@ namespace rubberdyn
                                 "")
                 << std::endl;
         }
+      log_held_conditions(log);
       if (root)
         for (unsigned int s = 0; s < state.shortenings.size(); ++s)
           log << "  Pretension section "

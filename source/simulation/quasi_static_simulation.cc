@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -34,6 +35,18 @@ namespace rubberdyn
   namespace simulation
   {
     using namespace model;
+
+    namespace
+    {
+      /** K + 4 G / 3 of @p part's law (GPa): its stiffest response. */
+      double
+      dilatational_modulus(const Part &part)
+      {
+        return part.law->bulk_modulus() + 4. / 3. * part.law->shear_modulus();
+      }
+    } // namespace
+
+
 
     void
     QuasiStaticSimulation::check_supported(
@@ -257,6 +270,47 @@ namespace rubberdyn
         bodies,
         bodies_follow_load_path(),
         rigid_parts);
+      set_roundoff_floor();
+    }
+
+
+
+    void
+    QuasiStaticSimulation::set_roundoff_floor()
+    {
+      // Each part's volume and number of cells, over the ranks.
+      std::vector<double> volume(model.parts.size(), 0.),
+        n_cells(model.parts.size(), 0.);
+      for (const auto &cell : model.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int p =
+              model.part_of_material_id(cell->material_id());
+            volume[p] += cell->measure();
+            n_cells[p] += 1.;
+          }
+      Utilities::MPI::sum(ArrayView<const double>(volume),
+                          model.comm,
+                          ArrayView<double>(volume));
+      Utilities::MPI::sum(ArrayView<const double>(n_cells),
+                          model.comm,
+                          ArrayView<double>(n_cells));
+      double element_force = 0.;
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (!model.parts[p].rigid && n_cells[p] > 0.)
+          {
+            const double h = std::cbrt(volume[p] / n_cells[p]);
+            const double f = dilatational_modulus(model.parts[p]) * h * h;
+            if (f > element_force)
+              {
+                element_force = f;
+                roundoff_part = p;
+                roundoff_size = h;
+              }
+          }
+      newton->set_roundoff_floor(
+        std::numeric_limits<double>::epsilon() * element_force *
+        std::sqrt(static_cast<double>(model.dof_handler.n_dofs())));
     }
 
 
@@ -391,6 +445,16 @@ namespace rubberdyn
           << ", steps " << q.initial_step << " (first), " << q.minimum_step
           << " to " << q.maximum_step << "; linear solver "
           << newton->linear_solver_name() << std::endl;
+      log << "  Converged: residual <= " << q.residual_tolerance
+          << " x max(reactions, loads) or <= "
+          << std::max(newton->roundoff_floor(), q.residual_floor) << " kN";
+      if (roundoff_part != numbers::invalid_unsigned_int)
+        log << " (round-off: eps (K + 4G/3) h^2 sqrt(dofs) of "
+            << model.parts[roundoff_part].name << ", K + 4G/3 "
+            << dilatational_modulus(model.parts[roundoff_part]) << " GPa, h "
+            << roundoff_size << " mm)";
+      log << ", and energy <= " << q.energy_tolerance << " x the step's first"
+          << std::endl;
       for (unsigned int p = 0; p < model.parts.size(); ++p)
         if (model.parts[p].rigid)
           {

@@ -46,6 +46,46 @@ namespace rubberdyn
         s << std::setprecision(digits) << x;
         return s.str();
       }
+
+
+
+      /**
+       * Which limit ended a run whose load step failed for @p reason: the
+       * cut-backs in a row (@p count_limit, `Maximum cut-backs`) or the
+       * step that cannot be halved again (@p step_limit, `Minimum step`),
+       * and which entries to change, named by their full path: more Newton
+       * iterations if they ran out, and the limit that was hit. "the limit
+       * ...; to go on, raise ...".
+       */
+      std::string
+      cutback_limit_advice(const std::string             &reason,
+                           const bool                     count_limit,
+                           const bool                     step_limit,
+                           const parameters::QuasiStatic &s)
+      {
+        const std::string path = "Time integration/Quasi-static/";
+        std::string       hit, change;
+        if (count_limit)
+          {
+            hit = path + "Maximum cut-backs = " +
+                  std::to_string(s.max_cutbacks) + " (cut-backs in a row)";
+            change = "raise " + path + "Maximum cut-backs";
+          }
+        if (step_limit)
+          {
+            hit += std::string(count_limit ? " and " : "") + path +
+                   "Minimum step = " + short_number(s.minimum_step) +
+                   " (half the step is below it)";
+            change += std::string(count_limit ? " or " : "") + "lower " +
+                      path + "Minimum step";
+          }
+        // (A step whose Newton iterations ran out may converge with more;
+        // one that inverts an element or diverges needs a smaller step.)
+        if (reason.rfind("no convergence in", 0) == 0)
+          change = "raise " + path + "Maximum iterations (now " +
+                   std::to_string(s.max_iterations) + ") or " + change;
+        return "the limit " + hit + "; to go on, " + change;
+      }
     } // namespace
 
 
@@ -169,6 +209,33 @@ namespace rubberdyn
                const VectorType                    &increment,
                const bool                           predictor);
 
+      /**
+       * What the Residual tolerance multiplies (kN): the larger of the
+       * norms of the reactions and of the loads of @p r, at least the
+       * Residual floor (no division by zero).
+       */
+      double
+      residual_scale(const Residual &r) const
+      {
+        return std::max({r.reaction_norm, r.load_norm, settings.residual_floor});
+      }
+
+      /**
+       * The force criterion: the residual of @p r at most @p tolerance
+       * times residual_scale(), or at most the Residual floor, or at most
+       * the round-off of the residual (roundoff_floor): where the
+       * reactions and loads are nearly zero (a contact gap that has just
+       * closed) the relative demand falls below what the element and
+       * contact forces can resolve, and no cut-back can meet it.
+       */
+      bool
+      residual_converged(const Residual &r, const double tolerance) const
+      {
+        return r.free_norm <= settings.residual_floor ||
+               r.free_norm <= roundoff_floor ||
+               r.free_norm <= tolerance * residual_scale(r);
+      }
+
       /** Whether the assembled tangent is symmetric (CG may solve it). */
       bool
       symmetric() const;
@@ -211,6 +278,11 @@ namespace rubberdyn
        * elements'. */
       std::vector<model::ForceContribution *> loads;
       parameters::QuasiStatic                 settings;
+      /**
+       * The round-off of the residual (kN): below it the force criterion
+       * counts as met (QuasiStaticSolver::set_roundoff_floor()).
+       */
+      double roundoff_floor = 0.;
       MPI_Comm                                comm;
       bool                                    use_direct;
 
@@ -1290,6 +1362,24 @@ namespace rubberdyn
 
 
 
+    void
+    QuasiStaticSolver::set_roundoff_floor(const double roundoff_floor)
+    {
+      AssertThrow(roundoff_floor >= 0. && std::isfinite(roundoff_floor),
+                  ExcMessage("the round-off floor must be finite and >= 0"));
+      impl->roundoff_floor = roundoff_floor;
+    }
+
+
+
+    double
+    QuasiStaticSolver::roundoff_floor() const
+    {
+      return impl->roundoff_floor;
+    }
+
+
+
     const std::vector<model::RigidBody> &
     QuasiStaticSolver::bodies() const
     {
@@ -1651,15 +1741,14 @@ namespace rubberdyn
                  t_new,
                  t_new,
                  r);
-      const double scale_now =
-        std::max({r.reaction_norm, r.load_norm, settings.residual_floor});
+      const double scale_now = I.residual_scale(r);
       const double ratio_now = r.free_norm / scale_now;
       const bool   holds =
         !r.failed &&
-        (r.free_norm <= settings.residual_floor ||
-         ratio_now <=
-           std::max(10. * ratio, 1e-3 * settings.residual_tolerance) ||
-         (penalty_updates >= 3 && ratio_now <= settings.residual_tolerance));
+        (I.residual_converged(
+           r, std::max(10. * ratio, 1e-3 * settings.residual_tolerance)) ||
+         (penalty_updates >= 3 &&
+          I.residual_converged(r, settings.residual_tolerance)));
       if (root && !holds)
         log << "    penalty stiffness of this state: residual "
             << std::scientific << std::setprecision(3) << r.free_norm
@@ -1699,8 +1788,7 @@ namespace rubberdyn
             }
           take_trial();
 
-          const double scale =
-            std::max({r.reaction_norm, r.load_norm, s.residual_floor});
+          const double scale = I.residual_scale(r);
           const double ratio = r.free_norm / scale;
           // (Collective: on every rank, not inside the log's if.)
           const double update = du.linfty_norm();
@@ -1714,8 +1802,7 @@ namespace rubberdyn
                                  std::string())
                 << ", " << std::fixed << std::setprecision(2) << wall() << " s"
                 << std::defaultfloat << std::setprecision(6) << std::endl;
-          bool residual_ok =
-            r.free_norm <= s.residual_floor || ratio <= s.residual_tolerance;
+          bool residual_ok = I.residual_converged(r, s.residual_tolerance);
           // (In a step in which nothing changes, e.g. a held load with
           // friction, even the first iteration's energy is round-off: an
           // increment at the round-off of the strain energy is converged
@@ -1804,7 +1891,9 @@ namespace rubberdyn
                 std::min(load_step.iterations + 1, s.max_iterations);
               if (root)
                 log << "  Cut back: " << reason << std::endl;
-              if (cutbacks > s.max_cutbacks || 0.5 * step < s.minimum_step)
+              const bool count_limit = cutbacks > s.max_cutbacks;
+              const bool step_limit  = 0.5 * step < s.minimum_step;
+              if (count_limit || step_limit)
                 {
                   // The history of the last converged state stays current
                   // (never accepted since), and so do the outputs.
@@ -1812,7 +1901,9 @@ namespace rubberdyn
                     "the load step to t = " + short_number(t_new, 6) +
                     " did not converge (" + reason + ") after " +
                     std::to_string(cutbacks - 1) + " cut-backs, at a step of " +
-                    short_number(step) + "; the last converged state is t = " +
+                    short_number(step) + ", which hit " +
+                    cutback_limit_advice(reason, count_limit, step_limit, s) +
+                    "; the last converged state is t = " +
                     short_number(current_time, 6));
                 }
               step *= 0.5;

@@ -49,11 +49,18 @@ namespace rubberdyn
       unsigned int max_iterations = 15;
       /** Cut-backs (halvings) allowed in a row before the run gives up. */
       unsigned int max_cutbacks = 10;
-      /** ||residual of the free dofs|| <= this * ||reactions||. */
+      /**
+       * ||residual of the free dofs|| <= this * max(||reactions||,
+       * ||loads||) (-), or <= the residual's round-off (kN,
+       * time_integration::QuasiStaticSolver::set_roundoff_floor()).
+       */
       double residual_tolerance = 1e-8;
       /** |du . r| <= this * the step's first |du . r|. */
       double energy_tolerance = 1e-14;
-      /** Residual norm (kN) always counted as converged (unloaded model). */
+      /**
+       * Residual norm (kN) always counted as converged (an unloaded
+       * model), the energy criterion waived.
+       */
       double residual_floor = 1e-12;
       /** Whether Newton updates are damped by a backtracking line search. */
       bool         line_search   = true;

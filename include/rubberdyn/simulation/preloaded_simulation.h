@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rubberdyn
 {
@@ -48,9 +49,17 @@ namespace rubberdyn
      * to start again from the preload.
      *
      * The same boundary conditions act in both runs, with t the pseudo-time
-     * of the load path in the first and the time (ms) in the second: a
-     * displacement, traction or pressure must have the same value at the
-     * end of the load path and at t = 0 (checked at the faces' centres).
+     * of the load path in the first and the time (ms) in the second. A
+     * displacement, traction or pressure whose value at the end of the
+     * load path, t = T (the Quasi-static end time), differs from its value
+     * at t = 0 (at a vertex or the centre of one of its faces) is a
+     * preload: ramped on the load path as its function says, then held at
+     * its value at t = T for the whole explicit run (a displacement with
+     * zero velocity, a constant load), as a crash code holds a preload
+     * after its dynamic relaxation. Any other condition is one function of
+     * both runs, which the explicit run evaluates at its own t (e.g. a
+     * motion that is zero on the load path, 0 <= t <= T, and starts after
+     * t = T ms). doc/quasi_static.md, "The hand-off".
      */
     class PreloadedSimulation
     {
@@ -58,10 +67,12 @@ namespace rubberdyn
       /**
        * Set both runs up (nothing is written yet).
        *
+       * The preloads' functions in @p model become their held values
+       * (hold_preloads()) once the load path is set up: from then on the
+       * model's conditions are the explicit run's.
+       *
        * @param model_parameters ExplicitSimulation::model_parameters_text().
-       * @throws InputError naming the entry: what either scheme cannot run,
-       *   a condition that differs between the end of the load path and
-       *   t = 0.
+       * @throws InputError naming the entry: what either scheme cannot run.
        */
       PreloadedSimulation(Model                             &model,
                           const parameters::TimeIntegration &time_integration,
@@ -84,17 +95,29 @@ namespace rubberdyn
 
     private:
       /**
-       * Refuse a displacement, traction or pressure condition whose
-       * functions differ between t = @p end_time and t = 0 at the centre of
-       * one of its faces.
+       * Find the preloads of @p model: the displacement, traction and
+       * pressure conditions with a function whose value at t = @p end_time
+       * (the Quasi-static end time) differs from its value at t = 0, by
+       * more than 1e-12 relative, at a vertex or the centre of one of
+       * their faces on any rank. Replace each function f(X, t) of these by
+       * f(X, @p end_time) for every t: held. Returns their indices in
+       * `model.boundary_conditions`. Collective.
        */
-      static void
-      check_continuity(const Model &model, const double end_time);
+      static std::vector<unsigned int>
+      hold_preloads(Model &model, const double end_time);
+
+      /** One log line per held preload (rank 0). */
+      void
+      log_held_conditions(std::ostream &log) const;
 
       Model                                 &model;
       parameters::Output                     output;
       std::string                            preload_parameters;
       std::string                            checkpoint_directory;
+      /** The Quasi-static end time: the load path's t at the hand-off. */
+      double                                 end_time;
+      /** The preloads (hold_preloads()), by condition index. */
+      std::vector<unsigned int>              held_conditions;
       /** Whether the explicit run continues from its own checkpoint. */
       bool                                   continues = false;
       std::unique_ptr<QuasiStaticSimulation> quasi_static;

@@ -1,6 +1,8 @@
 #ifndef rubberdyn_simulation_quasi_static_simulation_h
 #define rubberdyn_simulation_quasi_static_simulation_h
 
+#include <deal.II/base/types.h>
+
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/simulation/preload.h>
@@ -170,6 +172,30 @@ namespace rubberdyn
        */
       void
       cut_pretension_sections(elements::SolidHexElements &hexes);
+
+      /**
+       * Set the solver's round-off floor (time_integration::
+       * QuasiStaticSolver::set_roundoff_floor()) to
+       * eps max_p (K_p + 4 G_p / 3) h_p^2 sqrt(N): eps the machine
+       * epsilon, K_p and G_p the small-strain bulk and shear moduli of
+       * deformable part p (GPa, kN/mm^2), h_p its mean cell size (the cube
+       * root of its volume over its number of cells, mm), N the number of
+       * dofs. The strain is computed from F = 1 + grad u, so it carries a
+       * round-off of eps whatever the load, and an element's nodal forces
+       * one of about eps (K + 4 G / 3) h^2 (the dilatational modulus: the
+       * stiffest response); the residual's norm sums N such errors in
+       * squares. No deformable part: 0. Collective.
+       */
+      void
+      set_roundoff_floor();
+
+      /**
+       * The part that sets the round-off floor
+       * (numbers::invalid_unsigned_int if none) and its mean cell size h
+       * (mm).
+       */
+      unsigned int roundoff_part = numbers::invalid_unsigned_int;
+      double       roundoff_size = 0.;
 
       Model                                                  &model;
       parameters::TimeIntegration                             time_integration;

@@ -241,6 +241,30 @@ namespace rubberdyn
       linear_solver_name() const;
 
       /**
+       * Set the round-off floor r_0 of the residual (kN, default 0): the
+       * force criterion of a Newton iteration is met if
+       * @f[
+       *   \|r_\text{free}\| \le \text{tol}\,\max(\|R\|, \|F_\text{load}\|)
+       *   \quad\text{or}\quad \|r_\text{free}\| \le \max(r_0,
+       *   \text{Residual floor})
+       * @f]
+       * (tol the Residual tolerance, R the reactions, F_load the loads);
+       * the energy criterion is required as well. Where the reactions and
+       * loads are nearly zero (a contact gap that has just closed) the
+       * relative criterion asks for a residual below what the element
+       * and contact forces can resolve in floating point, which no
+       * cut-back can reach. simulation::QuasiStaticSimulation sets
+       * @f$ r_0 = \varepsilon\,\max_p (K_p + \tfrac43 G_p) h_p^2\,
+       * \sqrt{N} @f$ (doc/quasi_static.md, "Convergence").
+       */
+      void
+      set_roundoff_floor(const double roundoff_floor);
+
+      /** The floor of set_roundoff_floor() (kN). */
+      double
+      roundoff_floor() const;
+
+      /**
        * Evaluate the state at the current time (forces, reactions, energy)
        * without solving, and accept the contributions' state there (the
        * friction state the first load step starts from).
