@@ -77,7 +77,11 @@ namespace rubberdyn
               "scalar expression; of x, y, z (mm, reference position) and t "
               "(ms), in deal.II's FunctionParser syntax (muparser), e.g. "
               "'0.1*t; 0' for two components. Must be 0 for the other "
-              "types.");
+              "types. In 'quasi-static then explicit' a displacement, "
+              "traction or pressure whose value at the Quasi-static end "
+              "time differs from its value at t = 0 is a preload: ramped "
+              "on the load path, then held at its end value through the "
+              "explicit run (doc/quasi_static.md, the hand-off).");
             // "name = value, ...": read by make_function().
             prm.declare_entry("Function constants",
                               "",
