@@ -3,6 +3,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/parameters/contact_parameters.h>
 
 #include <algorithm>
 #include <iterator>
@@ -109,6 +110,15 @@ namespace rubberdyn
               "integrates all anew. 0: every step. A clamped interface that "
               "barely slides costs a fraction; its error is of the order of "
               "this distance over the facets' size, relative.");
+            prm.declare_entry(
+              "Initial penetration",
+              "report",
+              Patterns::Selection(parameters::initial_penetration_names()),
+              "Frictionless and Coulomb pairs (a tied pair keeps its initial "
+              "offset): " +
+                parameters::initial_penetration_documentation(
+                  "the slave nodes",
+                  "the master surface"));
             prm.leave_subsection();
           }
         prm.leave_subsection();
@@ -122,6 +132,16 @@ namespace rubberdyn
                           model::Model          &m)
       {
         using Definition = model::ContactPairDefinition;
+        // The rigid surfaces' choice is the model-wide `Contact/Initial
+        // penetration`: set here, on the surfaces parsed before the pairs,
+        // as the one place of the Model study's contact parsing that is
+        // its own file (model_study.cc parses the rest of `Contact`).
+        {
+          parameters::Contact contact;
+          contact.parse_parameters(prm);
+          for (model::RigidSurfaceDefinition &surface : m.rigid_surfaces)
+            surface.initial_penetration = contact.initial_penetration;
+        }
         prm.enter_subsection("Contact pairs");
         for (const std::string &name : listed_names(prm))
           {
@@ -192,6 +212,15 @@ namespace rubberdyn
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
             pair.segment_reuse_slip =
               non_negative("Segment reuse slip", " mm");
+            pair.initial_penetration = parameters::parse_initial_penetration(
+              prm.get("Initial penetration"));
+            if (pair.initial_penetration !=
+                  parameters::InitialPenetration::report &&
+                pair.type == Definition::Type::tied)
+              throw InputError(path + "/Initial penetration",
+                               "is for frictionless and Coulomb pairs; a "
+                               "tied pair keeps its initial offset, "
+                               "penetration included (set report)");
             if (pair.segment_reuse_slip > 0. &&
                 pair.type == Definition::Type::tied)
               throw InputError(path + "/Segment reuse slip",

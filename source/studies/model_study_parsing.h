@@ -98,13 +98,15 @@ namespace rubberdyn
                             const registry::ListedNames &names);
 
       /**
-       * Read `Contact pairs` into @p m.
+       * Read `Contact pairs` into @p m, and `Contact/Initial penetration`
+       * into the rigid surfaces already in @p m.
        *
        * @throws InputError naming the pair's entry: a boundary id absent
        *   from the mesh (through @p require_boundary_ids), a negative
        *   friction coefficient or decay, FD > FS, slave and master ids that
-       *   overlap without being the same, or a slave surface of two pairs
-       *   with different types.
+       *   overlap without being the same, a slave surface of two pairs
+       *   with different types, or an Initial penetration other than
+       *   'report' on a tied pair.
        */
       void
       parse_contact_pairs(ParameterHandler      &prm,
