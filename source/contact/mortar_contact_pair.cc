@@ -1393,6 +1393,36 @@ namespace rubberdyn
 
 
 
+    std::vector<SlaveNodeGap>
+    MortarContactPair::slave_node_gaps(const VectorType &u)
+    {
+      Implementation &I = *impl;
+      AssertThrow(I.definition.type != model::ContactPairDefinition::Type::tied,
+                  ExcMessage("slave_node_gaps() is not for tied pairs"));
+      I.load_positions(u);
+      I.search_if_needed();
+      std::vector<SlaveNodeGap> gaps;
+      for (Implementation::Pass &pass : I.passes)
+        {
+          I.compute_normals(pass);
+          I.integrate(pass, false);
+          for (const unsigned int node : pass.nodes)
+            if (pass.counted[node] && I.area[node] > 0.)
+              {
+                SlaveNodeGap g;
+                for (unsigned int d = 0; d < 3; ++d)
+                  g.dofs[d] = I.node_global_dofs[node][d];
+                g.x      = I.x[node];
+                g.normal = I.normal[node];
+                g.gap    = -(I.normal[node] * I.gap[node]) / I.area[node];
+                gaps.push_back(g);
+              }
+        }
+      return gaps;
+    }
+
+
+
     void
     MortarContactPair::save(std::ostream &out) const
     {

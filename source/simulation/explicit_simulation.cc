@@ -4,6 +4,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/contact/initial_penetrations.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/elements/solid_hex_forces.h>
@@ -200,6 +201,11 @@ namespace rubberdyn
       , model_parameters(model_parameters)
     {
       const MPI_Comm comm = model.comm;
+
+      // Slave nodes that start inside their master surface: reported,
+      // moved out or refused before anything is built from the mesh (a
+      // hand-off's load path has done it already).
+      contact::resolve_initial_penetrations(model);
 
       // Elements: one group per part (its law and formulation).
       const std::vector<elements::ElementGroup> groups =
@@ -638,6 +644,7 @@ namespace rubberdyn
             << (p < added_mass_by_part.size() ? added_mass_by_part[p] : 0.)
             << " kg";
       log << ")" << std::endl;
+      setup::log_initial_penetrations(model, log);
     }
   } // namespace simulation
 } // namespace rubberdyn

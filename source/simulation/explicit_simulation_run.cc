@@ -10,6 +10,7 @@
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/simulation/explicit_simulation.h>
+#include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
 #include <rubberdyn/postprocess/run_summary.h>
@@ -636,6 +637,8 @@ namespace rubberdyn
                      "\": " + json_number(added_mass_by_part[p]);
         entries.emplace_back("added_mass_by_part", by_part + "}");
       }
+      entries.emplace_back("initial_penetrations",
+                           setup::initial_penetrations_json(model));
       for (const auto &plugin : postprocessors)
         plugin->summary(view, entries);
       if (root)

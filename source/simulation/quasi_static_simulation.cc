@@ -2,6 +2,7 @@
 
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
+#include <rubberdyn/contact/initial_penetrations.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
@@ -132,6 +133,9 @@ namespace rubberdyn
       , title(title)
     {
       check_supported(model, time_integration, output);
+      // Slave nodes that start inside their master surface: reported,
+      // moved out or refused before anything is built from the mesh.
+      contact::resolve_initial_penetrations(model);
       // The mixed u-p element on the model's Q2 dofs, or the explicit
       // engine's hexahedra (F-bar, displacement) on its Q1 dofs.
       if (model.uses_mixed_up())
@@ -524,6 +528,7 @@ namespace rubberdyn
               << " at t = " << section.lock_time << ", then locked"
               << std::endl;
         }
+      setup::log_initial_penetrations(model, log);
     }
 
 

@@ -12,7 +12,9 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
+#include <cmath>
 #include <iomanip>
+#include <ostream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -281,6 +283,63 @@ namespace rubberdyn
             forces.push_back(std::make_unique<contact::RigidSurfaceForces>(
               *contacts.back(), std::vector<unsigned int>{body_of_surface[s]}));
           }
+      }
+
+
+
+      void
+      log_initial_penetrations(Model &model, std::ostream &log)
+      {
+        if (!model.initial_penetrations || model.initial_penetrations_logged)
+          return;
+        model.initial_penetrations_logged = true;
+        if (Utilities::MPI::this_mpi_process(model.comm) != 0)
+          return;
+        using parameters::InitialPenetration;
+        for (const InitialPenetrationReport &report :
+             *model.initial_penetrations)
+          {
+            const std::string choice = " (" + report.entry + " = " +
+                                       parameters::to_string(report.action) +
+                                       ")";
+            if (report.action == InitialPenetration::move_slave_nodes_out)
+              log << "  " << report.interaction << ": " << report.found
+                  << "; moved out onto it" << choice << ": " << report.n_moved
+                  << " nodes' reference coordinates changed, by up to "
+                  << report.max_move << " mm" << std::endl;
+            else
+              log << "  WARNING: " << report.interaction << ": " << report.found
+                  << "; kept" << choice
+                  << ": the penalty pushes them out from the first step"
+                  << std::endl;
+          }
+      }
+
+
+
+      std::string
+      initial_penetrations_json(const Model &model)
+      {
+        // Nine digits, as the summary's other numbers.
+        const auto number = [](const double value) {
+          std::ostringstream s;
+          s << std::setprecision(9) << value;
+          return s.str();
+        };
+        std::string text = "[";
+        if (model.initial_penetrations)
+          for (const InitialPenetrationReport &report :
+               *model.initial_penetrations)
+            text += std::string(text.size() > 1 ? ", " : "") +
+                    "{\"interaction\": \"" + report.interaction +
+                    "\", \"nodes\": " + std::to_string(report.n_nodes) +
+                    ", \"max_penetration\": " + number(report.max_penetration) +
+                    ", \"at\": [" + number(report.where[0]) + ", " +
+                    number(report.where[1]) + ", " + number(report.where[2]) +
+                    "], \"action\": \"" + parameters::to_string(report.action) +
+                    "\", \"moved_nodes\": " + std::to_string(report.n_moved) +
+                    ", \"max_move\": " + number(report.max_move) + "}";
+        return text + "]";
       }
 
 

@@ -180,6 +180,7 @@ namespace rubberdyn
       plate.surface                  = {Point<3>(0., 0., 0.), up, p.friction};
       plate.boundary_ids             = faces;
       plate.penalty_scale            = p.contact.penalty_scale;
+      plate.initial_penetration      = p.contact.initial_penetration;
       plate.body.name                = plate.name;
       model.rigid_surfaces.push_back(plate);
 
@@ -188,6 +189,7 @@ namespace rubberdyn
       impactor.surface       = {Point<3>(0., 0., p.height), -up, p.friction};
       impactor.boundary_ids  = faces;
       impactor.penalty_scale = p.contact.penalty_scale;
+      impactor.initial_penetration = p.contact.initial_penetration;
       impactor.body.name     = impactor.name;
       impactor.body.mass     = p.impactor_mass;
       impactor.body.free[2]  = true;

@@ -3,6 +3,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/parameters/contact_parameters.h>
 
 #include <algorithm>
 #include <iterator>
@@ -81,7 +82,10 @@ namespace rubberdyn
                               "s (-, > 0): the penalty per area is s times "
                               "the smaller of the two sides' mean bulk "
                               "modulus over element thickness V/A (GPa/mm), "
-                              "A the facets' current area.");
+                              "A the facets' current area. Its own default: "
+                              "Contact/Penalty scale factor (0.1) is the "
+                              "rigid surfaces' node-to-surface stiffness "
+                              "per node, which a mortar pair does not use.");
             prm.declare_entry("Two-pass",
                               "false",
                               Patterns::Bool(),
@@ -109,6 +113,15 @@ namespace rubberdyn
               "integrates all anew. 0: every step. A clamped interface that "
               "barely slides costs a fraction; its error is of the order of "
               "this distance over the facets' size, relative.");
+            prm.declare_entry(
+              "Initial penetration",
+              "report",
+              Patterns::Selection(parameters::initial_penetration_names()),
+              "Frictionless and Coulomb pairs (a tied pair keeps its initial "
+              "offset): " +
+                parameters::initial_penetration_documentation(
+                  "the slave nodes",
+                  "the master surface"));
             prm.leave_subsection();
           }
         prm.leave_subsection();
@@ -192,6 +205,15 @@ namespace rubberdyn
             pair.tie_tolerance = non_negative("Tie tolerance", " mm");
             pair.segment_reuse_slip =
               non_negative("Segment reuse slip", " mm");
+            pair.initial_penetration = parameters::parse_initial_penetration(
+              prm.get("Initial penetration"));
+            if (pair.initial_penetration !=
+                  parameters::InitialPenetration::report &&
+                pair.type == Definition::Type::tied)
+              throw InputError(path + "/Initial penetration",
+                               "is for frictionless and Coulomb pairs; a "
+                               "tied pair keeps its initial offset, "
+                               "penetration included (set report)");
             if (pair.segment_reuse_slip > 0. &&
                 pair.type == Definition::Type::tied)
               throw InputError(path + "/Segment reuse slip",

@@ -235,7 +235,8 @@ namespace rubberdyn
 
       /**
        * Read `Rigid surfaces` into @p m (after its parts), each with its
-       * penalty scale resolved: its own or @p contact's.
+       * penalty scale resolved (its own or @p contact's) and @p contact's
+       * choice for initial penetrations (`Contact/Initial penetration`).
        *
        * @throws InputError naming the entry: a zero direction, a cylinder
        *   without radius, a boundary id absent from the mesh, a carrying
@@ -278,8 +279,9 @@ namespace rubberdyn
        * @throws InputError naming the pair's entry: a boundary id absent
        *   from the mesh (through @p require_boundary_ids), a negative
        *   friction coefficient or decay, FD > FS, slave and master ids that
-       *   overlap without being the same, or a slave surface of two pairs
-       *   with different types.
+       *   overlap without being the same, a slave surface of two pairs
+       *   with different types, or an Initial penetration other than
+       *   'report' on a tied pair.
        */
       void
       parse_contact_pairs(ParameterHandler      &prm,

@@ -196,6 +196,7 @@ namespace rubberdyn
               require_positive(definition.penalty_scale,
                                path + "/Penalty scale factor");
             }
+          definition.initial_penetration = contact.initial_penetration;
           return definition;
         }
 

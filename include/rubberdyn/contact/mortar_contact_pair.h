@@ -52,6 +52,19 @@ namespace rubberdyn
       unsigned int slipping_nodes  = 0;
     };
 
+    /** A slave node's gap (MortarContactPair::slave_node_gaps()). */
+    struct SlaveNodeGap
+    {
+      /** Global indices of its x, y, z dofs. */
+      types::global_dof_index dofs[3];
+      /** Its position (mm). */
+      Point<3> x;
+      /** Its mean normal gap g_a (mm; negative: penetration). */
+      double gap = 0.;
+      /** Its unit normal n_a (the slave facets' outward mean). */
+      Tensor<1, 3> normal;
+    };
+
     /** Where a pair's time went, this rank (for benchmarks). */
     struct ContactPairTimings
     {
@@ -298,6 +311,20 @@ namespace rubberdyn
        */
       void
       add_surface_fields(VectorType &fields) const;
+
+      /**
+       * The mean normal gap g_a = -n_a . g~_a / A_a of each slave node this
+       * rank books (of every pass: two-pass and self-contact pairs have
+       * both sides' nodes) at the positions X + @p u (owned entries of a
+       * vector of the model's dofs), all segments integrated; nodes that
+       * no master facet covers are left out. For the check of the initial
+       * penetrations (resolve_initial_penetrations()), on a pair built for
+       * it: it leaves the evaluation's scratch at these positions, so the
+       * pair is not to be evaluated afterwards. Not for tied pairs.
+       * Collective (a ghost update).
+       */
+      std::vector<SlaveNodeGap>
+      slave_node_gaps(const VectorType &u);
 
       /** This rank's share of the last evaluation. */
       const ContactPairStatistics &

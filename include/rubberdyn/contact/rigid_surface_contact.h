@@ -234,17 +234,6 @@ namespace rubberdyn
       std::vector<double> &
       state();
 
-    private:
-      struct Node
-      {
-        /** Local indices of the x, y, z degrees of freedom. */
-        unsigned int dofs[3];
-        /** Reference position (mm). */
-        Point<3> X;
-        /** Penalty stiffness (kN/mm). */
-        double stiffness;
-      };
-
       /**
        * Gap (mm, negative: penetration) and unit normal into the solid at
        * @p x (surface frame), and, if @p curvature is given, the
@@ -257,6 +246,17 @@ namespace rubberdyn
                      double &            gap,
                      Tensor<1, 3> &      normal,
                      Tensor<2, 3> *      curvature = nullptr);
+
+    private:
+      struct Node
+      {
+        /** Local indices of the x, y, z degrees of freedom. */
+        unsigned int dofs[3];
+        /** Reference position (mm). */
+        Point<3> X;
+        /** Penalty stiffness (kN/mm). */
+        double stiffness;
+      };
 
       /** The contact of one node with one surface (surface frame). */
       struct NodeContact

@@ -13,6 +13,7 @@
 #include <rubberdyn/model/element_formulation.h>
 #include <rubberdyn/model/rigid_body.h>
 #include <rubberdyn/model/rigid_surface.h>
+#include <rubberdyn/parameters/contact_parameters.h>
 
 #include <functional>
 #include <memory>
@@ -146,6 +147,12 @@ namespace rubberdyn
       std::set<types::boundary_id> boundary_ids;
       /** Penalty scale factor of its springs (-). */
       double penalty_scale = 0.1;
+      /**
+       * What the run does with boundary nodes that start inside the surface
+       * (`Contact/Initial penetration`).
+       */
+      parameters::InitialPenetration initial_penetration =
+        parameters::InitialPenetration::report;
     };
 
     /**
@@ -189,6 +196,47 @@ namespace rubberdyn
        * anew (mm); 0: every evaluation (contact::MortarContactPair).
        */
       double segment_reuse_slip = 0.;
+      /**
+       * What the run does with slave nodes that start inside the master
+       * surface (`Contact pairs/<name>/Initial penetration`; tied pairs
+       * keep their initial offset and are not checked).
+       */
+      parameters::InitialPenetration initial_penetration =
+        parameters::InitialPenetration::report;
+    };
+
+    /**
+     * What the check of the initial penetrations found for one contact
+     * pair or rigid surface that has any (contact::
+     * resolve_initial_penetrations()), and what it did.
+     */
+    struct InitialPenetrationReport
+    {
+      /** "Contact pairs/<name>" or "Rigid surfaces/<name>". */
+      std::string interaction;
+      /** The entry that chose the action. */
+      std::string entry;
+      /** The action taken. */
+      parameters::InitialPenetration action =
+        parameters::InitialPenetration::report;
+      /** Number of slave nodes that penetrate (all ranks). */
+      unsigned int n_nodes = 0;
+      /** The largest penetration, minus the gap (mm). */
+      double max_penetration = 0.;
+      /**
+       * Where: the node with the largest penetration (of equal ones to
+       * the tolerance, the lowest in x, then y, then z), mesh coordinates
+       * (mm).
+       */
+      Point<3> where;
+      /**
+       * The finding as a sentence: "25 slave nodes start inside the
+       * master surface, by up to 0.3 mm (at (0, 0, 5))".
+       */
+      std::string found;
+      /** Moved out: the number of nodes moved and the largest move (mm). */
+      unsigned int n_moved  = 0;
+      double       max_move = 0.;
     };
 
     /**
@@ -294,6 +342,17 @@ namespace rubberdyn
       std::vector<PretensionSection>      pretension_sections;
       std::vector<CrossSection>           cross_sections;
       std::vector<ContactPairDefinition>  contact_pairs;
+
+      /**
+       * The initial penetrations of the contact pairs and rigid surfaces,
+       * one report per interaction that has any, once the first
+       * simulation built on the model has checked them (contact::
+       * resolve_initial_penetrations(), which moves nodes out at most
+       * once); empty before.
+       */
+      std::optional<std::vector<InitialPenetrationReport>> initial_penetrations;
+      /** Whether a log has shown them (the hand-off's two runs log once). */
+      bool initial_penetrations_logged = false;
 
     private:
       /** Set by setup(): the dofs are fe_quadratic's. */

@@ -7,7 +7,9 @@
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
 
+#include <iosfwd>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace rubberdyn
@@ -127,6 +129,27 @@ namespace rubberdyn
         const std::vector<unsigned int>                         &body_of_surface,
         std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
         std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces);
+
+      /**
+       * The model's initial penetrations (Model::initial_penetrations,
+       * contact::resolve_initial_penetrations()) into @p log, one line per
+       * contact pair or rigid surface that has any, once per model (the
+       * hand-off's preload logs them, its explicit run not again); a
+       * `report` as a WARNING. Rank 0 writes.
+       */
+      void
+      log_initial_penetrations(Model &model, std::ostream &log);
+
+      /**
+       * The model's initial penetrations as a JSON array for
+       * run_summary.json: per interaction that has any its name
+       * ("Contact pairs/<name>", "Rigid surfaces/<name>"), the number of
+       * penetrating nodes, the largest penetration (mm) and where (mm),
+       * the action and the nodes moved and the largest move (mm). "[]"
+       * without any.
+       */
+      std::string
+      initial_penetrations_json(const Model &model);
 
       /**
        * The row-summed (lumped) mass rho N_a of each part's cells, one
