@@ -801,6 +801,26 @@ namespace rubberdyn
 
 
 
+    std::vector<std::string>
+    columns_ending_with(const std::vector<std::string> &columns,
+                        const std::vector<std::string> &suffixes)
+    {
+      std::vector<std::string> result;
+      for (const std::string &column : columns)
+        for (const std::string &suffix : suffixes)
+          if (column.size() >= suffix.size() &&
+              column.compare(column.size() - suffix.size(),
+                             suffix.size(),
+                             suffix) == 0)
+            {
+              result.push_back(column);
+              break;
+            }
+      return result;
+    }
+
+
+
     void
     write_time_history_plot(const std::string            &csv_path,
                             const std::string            &svg_path,

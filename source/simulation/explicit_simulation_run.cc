@@ -64,32 +64,20 @@ namespace rubberdyn
     ExplicitSimulation::write_history_plot(
       const std::vector<std::string> &columns) const
     {
-      const auto ends_with = [](const std::string &text,
-                                const std::string &suffix) {
-        return text.size() >= suffix.size() &&
-               text.compare(text.size() - suffix.size(), suffix.size(),
-                            suffix) == 0;
-      };
       postprocess::PlotPanel energies{"Energy balance",
                                       "energy (J)",
                                       {"kinetic_energy", "internal_energy",
                                        "external_work", "contact_work",
                                        "bulk_viscosity_work",
                                        "friction_work"}};
-      postprocess::PlotPanel forces{"Reactions and contact forces",
-                                    "force (kN)",
-                                    {}};
-      postprocess::PlotPanel displacements{"Displacements",
-                                           "displacement (mm)",
-                                           {}};
-      for (const std::string &column : columns)
-        {
-          if (ends_with(column, "_force") || ends_with(column, "_force_x") ||
-              ends_with(column, "_force_y") || ends_with(column, "_force_z"))
-            forces.columns.push_back(column);
-          if (ends_with(column, "_displacement"))
-            displacements.columns.push_back(column);
-        }
+      const postprocess::PlotPanel forces{
+        "Reactions and contact forces",
+        "force (kN)",
+        postprocess::columns_ending_with(columns, postprocess::force_suffixes)};
+      const postprocess::PlotPanel displacements{
+        "Displacements",
+        "displacement (mm)",
+        postprocess::columns_ending_with(columns, {"_displacement"})};
       // The nodes of Output/History nodes (LS-DYNA's history nodes).
       postprocess::PlotPanel history_nodes{"History nodes",
                                            "displacement (mm)",

@@ -24,6 +24,7 @@
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -36,6 +37,28 @@ namespace rubberdyn
   namespace simulation
   {
     using namespace model;
+
+    namespace
+    {
+      /**
+       * The Newton and linear iterations of the converged load steps, the
+       * cut-backs and the iterations the failed attempts took, summed over
+       * the steps of @p s.
+       */
+      std::array<unsigned int, 4>
+      iteration_totals(const time_integration::QuasiStaticSolver &s)
+      {
+        std::array<unsigned int, 4> totals = {{0, 0, 0, 0}};
+        for (const auto &step : s.steps())
+          {
+            totals[0] += step.iterations;
+            totals[1] += step.linear_iterations;
+            totals[2] += step.cutbacks;
+            totals[3] += step.cutback_iterations;
+          }
+        return totals;
+      }
+    } // namespace
 
     namespace
     {
@@ -780,14 +803,8 @@ namespace rubberdyn
         }
       if (root)
         {
-          unsigned int iterations = 0, linear = 0, cutbacks = 0, wasted = 0;
-          for (const auto &step : s.steps())
-            {
-              iterations += step.iterations;
-              linear += step.linear_iterations;
-              cutbacks += step.cutbacks;
-              wasted += step.cutback_iterations;
-            }
+          const auto [iterations, linear, cutbacks, wasted] =
+            iteration_totals(s);
           // (The converged attempts' iterations first: scripts read the
           // number before "Newton".)
           log << "Finished: " << s.steps().size()
@@ -811,14 +828,7 @@ namespace rubberdyn
       if (Utilities::MPI::this_mpi_process(model.comm) != 0)
         return;
       const time_integration::QuasiStaticSolver &s = *newton;
-      unsigned int iterations = 0, linear = 0, cutbacks = 0, wasted = 0;
-      for (const auto &step : s.steps())
-        {
-          iterations += step.iterations;
-          linear += step.linear_iterations;
-          cutbacks += step.cutbacks;
-          wasted += step.cutback_iterations;
-        }
+      const auto [iterations, linear, cutbacks, wasted] = iteration_totals(s);
       using postprocess::json_number;
       std::vector<postprocess::SummaryEntry> entries = {
         {"scheme", postprocess::json_string(time_integration.scheme)},
@@ -843,26 +853,16 @@ namespace rubberdyn
                                      entries);
 
       // The plot: energies, forces and the Newton iterations per step.
-      const auto ends_with = [](const std::string &text,
-                                const std::string &suffix) {
-        return text.size() >= suffix.size() &&
-               text.compare(text.size() - suffix.size(),
-                            suffix.size(),
-                            suffix) == 0;
-      };
-      postprocess::PlotPanel energy{"Internal energy", "energy (J)", {}};
-      postprocess::PlotPanel forces{"Reactions and forces", "force (kN)", {}};
-      postprocess::PlotPanel newton_panel{"Newton iterations per load step",
-                                          "iterations",
-                                          {"newton_iterations"}};
-      for (const std::string &column : columns)
-        {
-          if (ends_with(column, "internal_energy"))
-            energy.columns.push_back(column);
-          if (ends_with(column, "_force") || ends_with(column, "_force_x") ||
-              ends_with(column, "_force_y") || ends_with(column, "_force_z"))
-            forces.columns.push_back(column);
-        }
+      const postprocess::PlotPanel energy{
+        "Internal energy",
+        "energy (J)",
+        postprocess::columns_ending_with(columns, {"internal_energy"})};
+      const postprocess::PlotPanel forces{
+        "Reactions and forces",
+        "force (kN)",
+        postprocess::columns_ending_with(columns, postprocess::force_suffixes)};
+      const postprocess::PlotPanel newton_panel{
+        "Newton iterations per load step", "iterations", {"newton_iterations"}};
       std::vector<postprocess::PlotPanel> panels;
       for (const postprocess::PlotPanel &panel :
            {energy, forces, newton_panel})

@@ -31,6 +31,20 @@ namespace rubberdyn
 
 
     /**
+     * The @p columns that end with one of @p suffixes, in their order: what
+     * a panel of a kind of quantity shows.
+     */
+    std::vector<std::string>
+    columns_ending_with(const std::vector<std::string> &columns,
+                        const std::vector<std::string> &suffixes);
+
+    /** The suffixes of the force columns (`_force`, `_force_x/_y/_z`). */
+    inline const std::vector<std::string> force_suffixes = {"_force",
+                                                            "_force_x",
+                                                            "_force_y",
+                                                            "_force_z"};
+
+    /**
      * Tick marks of one axis: "nice" values, 1, 2 or 5 times a power of ten
      * apart, that lie inside a given range, each with its label.
      */
