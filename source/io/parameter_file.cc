@@ -326,6 +326,18 @@ namespace rubberdyn
                                                    top;
         }
 
+        /**
+         * The path of the file line @p n (from 1) of the text came from
+         * (relative to the working directory, as the include lines that
+         * reached it compose it).
+         */
+        std::filesystem::path
+        path_of(const unsigned int n) const
+        {
+          return (n >= 1 && n <= origins.size()) ? paths[origins[n - 1].file] :
+                                                   std::filesystem::path(top);
+        }
+
         /** The line number in its own file of line @p n of the text. */
         unsigned int
         line_in_file(const unsigned int n) const
@@ -349,9 +361,10 @@ namespace rubberdyn
           unsigned int line;
         };
 
-        std::string              top;
-        std::vector<std::string> files;
-        std::vector<Origin>      origins;
+        std::string                        top;
+        std::vector<std::string>           files;
+        std::vector<std::filesystem::path> paths;
+        std::vector<Origin>                origins;
 
         /**
          * Read @p path (named @p shown in messages) at the end of @p chain,
@@ -423,6 +436,7 @@ namespace rubberdyn
 
           chain.push_back({shown, canonical});
           files.push_back(shown);
+          paths.push_back(path);
           const unsigned int file_index = files.size() - 1;
 
           // The logical lines, rebuilt as ParameterHandler::parse_input()
@@ -895,6 +909,18 @@ namespace rubberdyn
         return text.substr(first, last - first + 1);
       }
     } // namespace
+
+
+
+    std::string
+    file_setting_entry(const std::string &filename,
+                       const std::string &entry_path)
+    {
+      const ExpandedText expanded(filename);
+      const FileLines    file(expanded.text);
+      const unsigned int line = file.line_setting(entry_path);
+      return line == 0 ? filename : expanded.path_of(line).string();
+    }
 
 
 

@@ -5,6 +5,7 @@
 #include <rubberdyn/base/exceptions.h>
 #include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/io/gmsh_mesh.h>
+#include <rubberdyn/io/parameter_file.h>
 #include <rubberdyn/model/model.h>
 
 #include <filesystem>
@@ -31,7 +32,8 @@ namespace rubberdyn
                           Patterns::FileName(Patterns::FileName::input),
                           "Gmsh mesh (.msh, format 2.2 or 4.1, ASCII) of "
                           "hexahedra; a relative path is relative to the "
-                          "parameter file's folder. Physical volume tags "
+                          "folder of the parameter file that sets it (the "
+                          "file given, or a file it includes). Physical volume tags "
                           "become material ids (name them in Parts/<name>/"
                           "Material ids), physical surface tags boundary ids "
                           "(for boundary conditions and rigid surfaces). Tag "
@@ -65,12 +67,17 @@ namespace rubberdyn
           throw InputError("Mesh/Mesh file",
                            "names no file; a Model needs a Gmsh mesh");
         parameter_tools::require_positive(scale, "Mesh/Scale");
-        // Relative to the parameter file's folder, so that a study runs
-        // from any working directory.
+        // Relative to the folder of the parameter file that sets it (the
+        // file given or one it includes), so that a study runs from any
+        // working directory and a base file shared from another folder
+        // finds its mesh.
         if (std::filesystem::path(mesh_file).is_relative() &&
             !parameter_file.empty())
           mesh_file =
-            (std::filesystem::path(parameter_file).parent_path() / mesh_file)
+            (std::filesystem::path(
+               io::file_setting_entry(parameter_file, "Mesh/Mesh file"))
+               .parent_path() /
+             mesh_file)
               .lexically_normal()
               .string();
         io::read_gmsh_mesh(m.triangulation, mesh_file, "Mesh/Mesh file");

@@ -7,7 +7,8 @@ the error stream naming the chain of files (and lines) that reached the
 fault, no deal.II banner, no signal, and nothing written in the working
 directory — by `rubberdyn --check` and by a run alike. The good chains
 (a base file plus a variant that overrides one entry, in a subsection and
-from another folder, at the deepest allowed depth 8) must check and, for
+from another folder, at the deepest allowed depth 8; a Model whose relative
+Mesh file is set in a base file of another folder) must check and, for
 the variant, run with the variant's value: the material point's last row is
 compared with eq. 4.8 of the reference study at the variant's stretch.
 
@@ -211,6 +212,44 @@ else:
           f"({100. * (nominal / exact - 1.):+.3f} %)")
     if not ok:
         failures.append("variant_run")
+
+# A Model's relative Mesh file is relative to the file that sets it: a base
+# file in one folder with its mesh beside it, a variant in another folder
+# that includes it (the mesh must be found beside the base, not beside the
+# variant), and a variant that sets a mesh of its own beside itself.
+mesh = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                    "parameter_files", "meshes", "rigid_drop.msh")
+for folder in ("good/model", "good/model_own_mesh"):
+    os.makedirs(os.path.join(work, folder), exist_ok=True)
+shutil.copy(mesh, os.path.join(work, "good/model/block.msh"))
+shutil.copy(mesh, os.path.join(work, "good/model_own_mesh/own.msh"))
+write("good/model/base.prm",
+      "set Study = Model\n"
+      "subsection Mesh\n  set Mesh file = block.msh\nend\n"
+      "subsection Parts\n  set Names = rubber\n"
+      "  subsection rubber\n    set Material ids = 1, 2\n  end\nend\n")
+for name, text in (("model_base_mesh", "include ../model/base.prm\n"),
+                   ("model_own_mesh",
+                    "include ../model/base.prm\n"
+                    "subsection Mesh\n  set Mesh file = own.msh\nend\n")):
+    folder = "model_variants" if name == "model_base_mesh" else "model_own_mesh"
+    top = write(f"good/{folder}/{name}.prm", text)
+    code, out, err, written = run(name + "_check", ["--check", top])
+    ok = code == 0 and "is a valid 'Model' study" in out
+    print(f"{name}_check: {'ok' if ok else 'FAILED'} (exit code {code}) "
+          f"{err.strip()[:300]}")
+    if not ok:
+        failures.append(name + "_check")
+# And the base's mesh removed: the message names the path beside the base.
+os.remove(os.path.join(work, "good/model/block.msh"))
+code, out, err, written = run("model_base_mesh_missing",
+                              ["--check", os.path.join(
+                                  work, "good/model_variants/model_base_mesh.prm")])
+ok = code == 2 and "good/model/block.msh" in err
+print(f"model_base_mesh_missing: {'ok' if ok else 'FAILED'} (exit code "
+      f"{code}) {err.strip()[:300]}")
+if not ok:
+    failures.append("model_base_mesh_missing")
 
 print(f"include chains: {len(failures)} failed" +
       (": " + ", ".join(failures) if failures else ""))

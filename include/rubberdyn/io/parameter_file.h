@@ -51,6 +51,19 @@ namespace rubberdyn
     read_listed_names(const std::string &filename);
 
     /**
+     * The file that sets the entry @p entry_path ("Mesh/Mesh file") when
+     * @p filename is read: @p filename itself or a file it includes (the
+     * last line that sets the entry counts, as in ParameterHandler), as the
+     * include lines compose its path; @p filename if no line sets it. A
+     * path in the entry's value is relative to this file's folder, so that
+     * a base file included from another folder finds its mesh. Call after
+     * read_parameter_file() has accepted @p filename.
+     */
+    std::string
+    file_setting_entry(const std::string &filename,
+                       const std::string &entry_path);
+
+    /**
      * The full paths ("A/B/Name") of the entries of @p prm whose value is
      * not their default, in declaration order.
      */
