@@ -73,7 +73,7 @@ namespace rubberdyn
       model           = std::make_unique<model::Model>(MPI_COMM_WORLD);
       model::Model &m = *model;
       prm.enter_subsection("Model");
-      m.gravity = parse_vector(prm.get("Gravity"), "Model/Gravity");
+      m.gravity = parse_vector(prm.get("Gravity"));
       prm.leave_subsection();
       const MeshContents mesh = parse_mesh(prm, parameter_file, m);
       parse_parts(prm, time_integration, mesh, m);

@@ -132,8 +132,7 @@ namespace rubberdyn
                              "is not used by Type = pressure (it acts along "
                              "the surface's normal); leave it at its "
                              "default x, y, z");
-          bc.moment_point = Point<3>(
-            parse_vector(prm.get("Moment point"), path + "/Moment point"));
+          bc.moment_point = Point<3>(parse_vector(prm.get("Moment point")));
           const std::string expression = prm.get("Function expression");
           if (bc.type == Type::displacement || bc.type == Type::velocity ||
               bc.type == Type::traction || bc.type == Type::pressure)

@@ -127,11 +127,20 @@ namespace rubberdyn
                               ",");
       }
 
-      /** Three numbers "a, b, c" of entry @p path. */
+      /**
+       * The three numbers "a, b, c" of an entry declared with
+       * vector_pattern() (which has checked them).
+       */
       Tensor<1, 3>
-      parse_vector(const std::string &text, const std::string &path);
+      parse_vector(const std::string &text);
 
-      /** Directions "x, z" as 0, 2, of entry @p path. */
+      /**
+       * Directions "x, z" of an entry declared with
+       * MultipleSelection("x|y|z") as 0, 2.
+       *
+       * @throws InputError naming @p path: a direction listed twice, or
+       *   none.
+       */
       std::vector<unsigned int>
       parse_components(const std::string &text, const std::string &path);
 

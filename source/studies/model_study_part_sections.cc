@@ -86,10 +86,8 @@ namespace rubberdyn
                              "the part '" + part +
                                "' uses the mixed u-p element, which takes no " +
                                kind + " yet; use 'F-bar'");
-          plane.point =
-            Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
-          const Tensor<1, 3> normal =
-            parse_vector(prm.get("Normal"), path + "/Normal");
+          plane.point               = Point<3>(parse_vector(prm.get("Point")));
+          const Tensor<1, 3> normal = parse_vector(prm.get("Normal"));
           if (!(normal.norm() > 0.))
             throw InputError(path + "/Normal", "must not be zero");
           plane.normal = normal / normal.norm();

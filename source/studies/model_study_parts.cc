@@ -232,8 +232,7 @@ namespace rubberdyn
               part.fbar_stabilization =
                 Utilities::string_to_double(stabilization);
             }
-          part.initial_velocity = parse_vector(prm.get("Initial velocity"),
-                                               path + "/Initial velocity");
+          part.initial_velocity = parse_vector(prm.get("Initial velocity"));
           if (!rigid)
             {
               refuse_rigid_entries(prm, path);
@@ -244,8 +243,7 @@ namespace rubberdyn
           part.rigid = true;
           part.law   = std::make_unique<materials::Elastic<3>>(prm, path);
           part.initial_angular_velocity =
-            parse_vector(prm.get("Initial angular velocity"),
-                         path + "/Initial angular velocity");
+            parse_vector(prm.get("Initial angular velocity"));
           materials::check_derived_constants(*part.law, path);
           part.quasi_static_equilibrium =
             prm.get("Quasi-static motion") == "equilibrium";

@@ -157,10 +157,8 @@ namespace rubberdyn
             shape == "cylinder with the solid outside" ?
               model::RigidSurface::Shape::cylinder_solid_outside :
               model::RigidSurface::Shape::cylinder_solid_inside;
-          definition.surface.point =
-            Point<3>(parse_vector(prm.get("Point"), path + "/Point"));
-          const Tensor<1, 3> direction =
-            parse_vector(prm.get("Direction"), path + "/Direction");
+          definition.surface.point = Point<3>(parse_vector(prm.get("Point")));
+          const Tensor<1, 3> direction = parse_vector(prm.get("Direction"));
           if (!(direction.norm() > 0.))
             throw InputError(path + "/Direction", "must not be zero");
           definition.surface.normal = direction / direction.norm();
@@ -275,8 +273,7 @@ namespace rubberdyn
                    parse_components(free, path + "/Free directions"))
                 body.free[d] = true;
             }
-          body.velocity = parse_vector(prm.get("Initial velocity"),
-                                       path + "/Initial velocity");
+          body.velocity = parse_vector(prm.get("Initial velocity"));
           // Named as 'Velocity function' in the messages (it was reported
           // as a 'Function expression', which rigid surfaces do not have).
           const std::shared_ptr<FunctionParser<3>> velocity =
