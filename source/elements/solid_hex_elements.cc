@@ -342,6 +342,41 @@ namespace rubberdyn
 
 
 
+    SolidHexElements::NodalMasses
+    SolidHexElements::nodal_masses(const unsigned int e) const
+    {
+      const internal::HexBlock &block = blocks[elements[e].block];
+      const unsigned int        l     = elements[e].lane;
+      const double              rho   = groups[block.group].density;
+      NodalMasses               result;
+      result.group = block.group;
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        {
+          double integral = 0.;
+          for (unsigned int q = 0; q < n_q; ++q)
+            integral += reference.values[q][a] * block.JxW[q][l];
+          result.mass[a] = rho * integral;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              result.dofs[a][d]     = block.dofs[a][d][l];
+              result.position[a][d] = block.X[a][d][l];
+            }
+        }
+      return result;
+    }
+
+
+
+    void
+    SolidHexElements::set_time_step_factors(std::vector<double> factors)
+    {
+      Assert(factors.empty() || factors.size() == elements.size(),
+             ExcDimensionMismatch(factors.size(), elements.size()));
+      time_step_factors = std::move(factors);
+    }
+
+
+
     std::vector<double>
     SolidHexElements::mass_by_group(
       const std::vector<double> &density_scaling) const
@@ -393,6 +428,9 @@ namespace rubberdyn
           for (unsigned int l = 0; l < block.n_active; ++l)
             steps[block.element[l]] = length[l] / c;
         }
+      // Selective mass scaling's factors (set_time_step_factors()).
+      for (unsigned int e = 0; e < time_step_factors.size(); ++e)
+        steps[e] *= time_step_factors[e];
       return steps;
     }
 

@@ -569,8 +569,12 @@ namespace rubberdyn
               result.bulk_viscosity_power +=
                 block_result.bulk_viscosity_power[l];
               group_viscous_power += block_result.bulk_viscosity_power[l];
-              result.min_time_step =
-                std::min(result.min_time_step, block_result.time_step[l]);
+              result.min_time_step = std::min(
+                result.min_time_step,
+                time_step_factors.empty() ?
+                  block_result.time_step[l] :
+                  block_result.time_step[l] *
+                    time_step_factors[block.element[l]]);
               for (unsigned int a = 0; a < n_nodes; ++a)
                 for (unsigned int d = 0; d < 3; ++d)
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];

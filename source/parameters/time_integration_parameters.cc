@@ -52,6 +52,22 @@ namespace rubberdyn
                         "whose stable step is smaller get added density; the "
                         "added mass is reported. 0 switches it off; at most "
                         "the End time.");
+      prm.declare_entry(
+        "Selective mass scaling time step", "0", Patterns::Double(0.),
+        "Target time step of selective mass scaling (ms), for every "
+        "deformable part without its own Parts/<name>/Selective mass scaling "
+        "time step: elements whose stable step is smaller get mass on their "
+        "deformation modes only (Olovsson, Simonsson & Unosson 2005; LS-DYNA "
+        "IMSCL, OpenRadioss /DT/AMS), so that translation, total mass and "
+        "momentum stay physical; each step then solves for the accelerations "
+        "of their nodes (conjugate gradients). The added mass and the solve's "
+        "iterations are reported per part (doc/theory.md, \"Selective mass "
+        "scaling\"). 0 switches it off; at most the End time.");
+      prm.declare_entry(
+        "Selective mass scaling tolerance", "1e-6", Patterns::Double(0., 1.),
+        "Relative residual of the accelerations' solve of selective mass "
+        "scaling (-), in the norm of the inverse diagonal of the mass "
+        "matrix; momentum is kept exactly whatever its value.");
       prm.declare_entry("Bulk viscosity linear", "0.06", Patterns::Double(0.),
                         "Linear bulk viscosity coefficient (-), LS-DYNA's Q2.");
       prm.declare_entry("Bulk viscosity quadratic", "1.5", Patterns::Double(0.),
@@ -144,6 +160,10 @@ namespace rubberdyn
       time_step_scale          = prm.get_double("Time step scale factor");
       minimum_time_step        = prm.get_double("Minimum time step");
       mass_scaling_time_step   = prm.get_double("Mass scaling time step");
+      selective_mass_scaling_time_step =
+        prm.get_double("Selective mass scaling time step");
+      selective_mass_scaling_tolerance =
+        prm.get_double("Selective mass scaling tolerance");
       bulk_viscosity_linear    = prm.get_double("Bulk viscosity linear");
       bulk_viscosity_quadratic = prm.get_double("Bulk viscosity quadratic");
       fbar_stabilization       = prm.get_double("F-bar stabilization");
@@ -208,6 +228,16 @@ namespace rubberdyn
       // A target step longer than the whole run is no time step: it would
       // make the model arbitrarily heavy (1e308 ms overflows the added
       // density to infinity) to take a single step.
+      if (selective_mass_scaling_time_step > end_time)
+        throw InputError("Time integration/Selective mass scaling time step",
+                         "is " +
+                           parameter_tools::format_short(
+                             selective_mass_scaling_time_step) +
+                           " ms, longer than the End time " +
+                           parameter_tools::format_short(end_time) +
+                           " ms; a time step cannot be longer than the run");
+      require_positive(selective_mass_scaling_tolerance,
+                       "Time integration/Selective mass scaling tolerance");
       if (mass_scaling_time_step > end_time)
         throw InputError("Time integration/Mass scaling time step",
                          "is " +

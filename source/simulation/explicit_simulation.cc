@@ -11,6 +11,8 @@
 #include <rubberdyn/simulation/explicit_simulation.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/model/rigid_part_mass.h>
+#include <rubberdyn/postprocess/mass_scaling_columns.h>
+#include <rubberdyn/simulation/selective_mass_scaling_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_columns.h>
@@ -253,6 +255,13 @@ namespace rubberdyn
       }
       element_forces =
         std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
+      // Selective mass scaling: mass on the deformation modes of the
+      // elements below their part's target step; their stable steps grow.
+      SelectiveMassScalingSetup mass_scaling =
+        setup::selective_mass_scaling(model, time_integration, *elements);
+      mass_scaling_parts = mass_scaling.parts;
+      if (mass_scaling.scaling)
+        elements->set_time_step_factors(mass_scaling.time_step_factors);
       {
         // Refuse a run that could never end (End time = 1e308) before
         // anything runs, in `--check` too. The step changes as the model
@@ -458,6 +467,9 @@ namespace rubberdyn
               }
           explicit_solver->set_rigid_parts(rigid_nodes);
         }
+      if (mass_scaling.scaling)
+        explicit_solver->set_selective_mass_scaling(
+          std::move(mass_scaling.scaling));
     }
 
 
@@ -558,6 +570,16 @@ namespace rubberdyn
     ExplicitSimulation::add_standard_postprocessors()
     {
       add_postprocessor(std::make_unique<postprocess::EnergyColumns>(true));
+      if (explicit_solver->selective_mass_scaling() != nullptr)
+        {
+          std::vector<std::string> names;
+          for (const Part &part : model.parts)
+            names.push_back(part.name);
+          add_postprocessor(std::make_unique<postprocess::MassScalingColumns>(
+            *explicit_solver->selective_mass_scaling(),
+            names,
+            mass_scaling_parts));
+        }
       std::vector<std::string> names;
       for (const BoundaryCondition &bc : model.boundary_conditions)
         names.push_back(bc.name);
@@ -644,6 +666,7 @@ namespace rubberdyn
             << (p < added_mass_by_part.size() ? added_mass_by_part[p] : 0.)
             << " kg";
       log << ")" << std::endl;
+      setup::log_selective_mass_scaling(model, mass_scaling_parts, log);
       setup::log_initial_penetrations(model, log);
     }
   } // namespace simulation

@@ -38,6 +38,8 @@ namespace rubberdyn
                                             "Time step scale factor",
                                             "Minimum time step",
                                             "Mass scaling time step",
+                                            "Selective mass scaling time step",
+                                            "Selective mass scaling tolerance",
                                             "Bulk viscosity linear",
                                             "Bulk viscosity quadratic",
                                             "Segment reuse slip"};

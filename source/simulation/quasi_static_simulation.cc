@@ -137,6 +137,19 @@ namespace rubberdyn
           }
       if (time_integration.mass_scaling_time_step > 0.)
         refuse("mass scaling", "Time integration/Mass scaling time step");
+      // 'quasi-static then explicit': the explicit run scales, the load
+      // path has no inertia to scale.
+      if (time_integration.scheme == "quasi-static")
+        {
+          if (time_integration.selective_mass_scaling_time_step > 0.)
+            refuse("selective mass scaling",
+                   "Time integration/Selective mass scaling time step");
+          for (const Part &part : model.parts)
+            if (part.selective_mass_scaling_time_step.value_or(0.) > 0.)
+              refuse("selective mass scaling",
+                     "Parts/" + part.name +
+                       "/Selective mass scaling time step");
+        }
       if (output.checkpoint_interval > 0.)
         refuse("checkpoints", "Output/Checkpoint interval");
       if (output.restart && time_integration.scheme == "quasi-static")

@@ -66,6 +66,13 @@ namespace rubberdyn
               "resists the Gauss-point volume changes of bending too: "
               "doc/theory.md 8.1, doc/bushing.md). Empty: Time "
               "integration/F-bar stabilization.");
+            prm.declare_entry(
+              "Selective mass scaling time step",
+              "",
+              Patterns::List(Patterns::Double(0.), 0, 1, ","),
+              "Deformable parts only: this part's target step of selective "
+              "mass scaling (ms), instead of Time integration/Selective mass "
+              "scaling time step; 0: none for this part. Empty: the model's.");
             prm.declare_entry("Initial velocity",
                               "0, 0, 0",
                               vector_pattern(),
@@ -231,6 +238,17 @@ namespace rubberdyn
                                             "of '" + formulation + "'"));
               part.fbar_stabilization =
                 Utilities::string_to_double(stabilization);
+            }
+          const std::string scaling_step =
+            Utilities::trim(prm.get("Selective mass scaling time step"));
+          if (!scaling_step.empty())
+            {
+              if (rigid)
+                throw InputError(path + "/Selective mass scaling time step",
+                                 "is for deformable parts only; part '" +
+                                   name + "' is rigid");
+              part.selective_mass_scaling_time_step =
+                Utilities::string_to_double(scaling_step);
             }
           part.initial_velocity = parse_vector(prm.get("Initial velocity"));
           if (!rigid)

@@ -6,6 +6,7 @@
 
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
+#include <rubberdyn/time_integration/selective_mass_scaling.h>
 
 #include <algorithm>
 #include <chrono>
@@ -485,6 +486,13 @@ namespace rubberdyn
       write_doubles(out, by_group.data(), by_group.size());
       for (const model::ForceContribution *contribution : contributions)
         contribution->save(out);
+      // Selective mass scaling: the next solve's start, so that a restart
+      // takes the same iterations to the same bits.
+      if (mass_scaling)
+        {
+          write_doubles(out, acceleration.begin(), n_owned);
+          mass_scaling->save(out);
+        }
       if (!out)
         throw SolverFailure("writing the checkpoint failed");
     }
@@ -581,6 +589,12 @@ namespace rubberdyn
             }
           for (model::ForceContribution *contribution : contributions)
             contribution->load(in);
+          if (mass_scaling)
+            {
+              read_doubles(in, acceleration.begin(), n_owned,
+                           "selective mass scaling accelerations");
+              mass_scaling->load(in);
+            }
         }
       catch (const std::exception &failure)
         {
@@ -707,6 +721,15 @@ namespace rubberdyn
         if (!rigid_dof[i]) // a rigid part's energy is its body's
           local += 0.5 * mass.local_element(i) * v.local_element(i) *
                    v.local_element(i);
+      // Selective mass scaling: the added mass's share, 1/2 v^T A v (an
+      // initial velocity that differs within a scaled element, e.g. next
+      // to a held node, has some).
+      if (mass_scaling)
+        {
+          v.update_ghost_values();
+          std::vector<double> by_group(settings.n_groups, 0.);
+          local += mass_scaling->added_kinetic_energy(v, by_group);
+        }
       energy.initial = Utilities::MPI::sum(local, comm);
       for (const RigidBody &body : bodies)
         energy.initial +=
@@ -769,12 +792,17 @@ namespace rubberdyn
       double *const group_kinetic  = sums.group_kinetic.data();
       double *const group_momentum = sums.group_momentum.data();
       double        kinetic        = 0.;
+      if (mass_scaling)
+        solve_scaled_accelerations(w);
       for (unsigned int i = 0; i < n_owned; ++i)
         {
           const double v_old = v.local_element(i);
-          const double v_new = v_old + average_step *
-                                         inverse_mass.local_element(i) *
-                                         f.local_element(i);
+          // (The scaled elements' nodes: the solved accelerations.)
+          const double v_new =
+            mass_scaling && mass_scaling->scaled(i) ?
+              v_old + average_step * acceleration.local_element(i) :
+              v_old + average_step * inverse_mass.local_element(i) *
+                        f.local_element(i);
           v.local_element(i) = v_new;
           if (rigid_dof[i]) // moves with its body, counted with it
             continue;
@@ -815,13 +843,18 @@ namespace rubberdyn
           const unsigned int i      = entry.dof;
           const double       m      = mass.local_element(i);
           const double       v_free = v.local_element(i);
-          const double       v_old  = v_free - w.average_step *
-                                          inverse_mass.local_element(i) *
-                                          f.local_element(i);
+          const bool scaled = mass_scaling && mass_scaling->scaled(i);
+          const double v_old =
+            scaled ? velocity_before.local_element(i) :
+                     v_free - w.average_step * inverse_mass.local_element(i) *
+                                f.local_element(i);
           const double v_new =
             constraints->half_step_velocity(entry, u.local_element(i));
+          // With selective mass scaling the neighbours' added mass pulls
+          // too: the reaction is (M a - f)_i with M's whole row.
           const double r =
-            m * (v_new - v_old) / w.average_step - f.local_element(i);
+            m * (v_new - v_old) / w.average_step - f.local_element(i) +
+            (scaled ? added_inertia.local_element(i) : 0.);
           sums.local_reaction[entry.group] += r;
           // Moment about the group's point, current position.
           {
@@ -858,6 +891,104 @@ namespace rubberdyn
             m * (mean_new - mean_free);
           v.local_element(i) = v_new;
         }
+    }
+
+
+
+    void
+    ExplicitSolver::set_selective_mass_scaling(
+      std::unique_ptr<SelectiveMassScaling> scaling)
+    {
+      AssertThrow(!started,
+                  ExcMessage("Selective mass scaling is set before the first "
+                             "step"));
+      mass_scaling = std::move(scaling);
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      std::vector<bool> prescribed(n_owned, false);
+      if (constraints != nullptr)
+        for (const KinematicConstraints::Entry &entry : constraints->entries())
+          prescribed[entry.dof] = true;
+      std::vector<unsigned int> component(dof_component.begin(),
+                                          dof_component.end());
+      mass_scaling->initialize(mass, component, prescribed);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        AssertThrow(!(rigid_dof[i] && mass_scaling->scaled(i)),
+                    ExcMessage("A rigid part's node is in an element with "
+                               "selective mass scaling"));
+      for (VectorType *vector :
+           {&acceleration, &added_inertia, &velocity_before, &mean_velocity})
+        vector->reinit(partitioner);
+      // The first solve starts from the lumped accelerations.
+      acceleration = 0.;
+    }
+
+
+
+    void
+    ExplicitSolver::solve_scaled_accelerations(const StepWeights &w)
+    {
+      const auto         start   = std::chrono::steady_clock::now();
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        velocity_before.local_element(i) = v.local_element(i);
+      // The first solve starts from the lumped mass's accelerations; later
+      // ones from the last step's.
+      if (!started)
+        for (unsigned int i = 0; i < n_owned; ++i)
+          acceleration.local_element(i) =
+            inverse_mass.local_element(i) * f.local_element(i);
+      // The prescribed dofs' accelerations are known: they take the
+      // constraint's half-step velocity.
+      if (constraints != nullptr)
+        {
+          constraints->begin_step(current_time, w.new_step);
+          for (const KinematicConstraints::Entry &entry :
+               constraints->entries())
+            if (mass_scaling->scaled(entry.dof))
+              acceleration.local_element(entry.dof) =
+                (constraints->half_step_velocity(entry,
+                                                 u.local_element(entry.dof)) -
+                 v.local_element(entry.dof)) /
+                w.average_step;
+        }
+      try
+        {
+          mass_scaling->solve(f, acceleration);
+        }
+      catch (const std::runtime_error &error)
+        {
+          throw SolverFailure(std::string(error.what()) + " at time " +
+                              number(current_time) + " ms, step " +
+                              std::to_string(step_number));
+        }
+      // (Collective: on every rank, whether or not it owns a constrained
+      // dof.)
+      if (constraints != nullptr)
+        mass_scaling->multiply_added_mass(acceleration, added_inertia);
+      timing.mass_scaling +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+
+
+    void
+    ExplicitSolver::add_scaled_kinetic_energy(const StepWeights &w)
+    {
+      // 1/2 v^T A v at t_n, with the same mean of the half-step velocities
+      // as the lumped part's (advance_velocities()). The added mass moves
+      // no momentum (A 1 = 0).
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        mean_velocity.local_element(i) =
+          w.old * velocity_before.local_element(i) +
+          w.next * v.local_element(i);
+      mean_velocity.update_ghost_values();
+      std::vector<double> by_group(settings.n_groups, 0.);
+      sums.kinetic +=
+        mass_scaling->added_kinetic_energy(mean_velocity, by_group);
+      for (unsigned int g = 0; g < settings.n_groups; ++g)
+        sums.group_kinetic[g] += by_group[g];
     }
 
 
@@ -1206,6 +1337,8 @@ namespace rubberdyn
           // The solid's velocities to t_{n+1/2}, the constraints' reactions.
           advance_velocities(w);
           apply_constraints(w);
+          if (mass_scaling)
+            add_scaled_kinetic_energy(w);
           add_shared_dofs_motion(w);
           timing.vector_updates += lap(clock);
           sum_over_ranks();

@@ -10,12 +10,14 @@
 #include <rubberdyn/materials/stress_kernel.h>
 #include <rubberdyn/model/element_formulation.h>
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <set>
 #include <string>
 #include <utility>
+#include <array>
 #include <vector>
 
 namespace dealii
@@ -398,10 +400,36 @@ namespace rubberdyn
       mass_by_group(const std::vector<double> &density_scaling) const;
 
       /**
+       * Where element @p e's nodes are and what they weigh: the local
+       * indices of the x, y, z dofs of its eight nodes, the lumped
+       * (row-summed) mass of each node from this element (kg, unscaled),
+       * and the element's group.
+       */
+      struct NodalMasses
+      {
+        std::array<std::array<unsigned int, 3>, 8> dofs;
+        std::array<double, 8>                      mass;
+        /** The nodes' reference positions (mm). */
+        std::array<std::array<double, 3>, 8> position;
+        unsigned int                               group;
+      };
+      NodalMasses
+      nodal_masses(const unsigned int e) const;
+
+      /**
+       * Multiply each element's stable step by @p factors[e] from now on
+       * (selective mass scaling: the square root of the factor by which
+       * the element's added mass lowers its highest frequency squared).
+       * Empty: none.
+       */
+      void
+      set_time_step_factors(std::vector<double> factors);
+
+      /**
        * Stable time step $l/c$ of each element in the reference
        * configuration (the length of the class documentation), without bulk
        * viscosity, with the F-bar stabilisation's stiffness (for mass
-       * scaling).
+       * scaling), times the factors of set_time_step_factors().
        */
       std::vector<double>
       reference_time_steps() const;
@@ -624,6 +652,8 @@ namespace rubberdyn
       std::vector<internal::HexBlock> blocks;
       std::vector<ElementInfo>        elements;
       std::vector<GroupData>          groups;
+      /** Per element: factor on its stable step (empty: 1). */
+      std::vector<double> time_step_factors;
       ElementSettings                 settings;
       std::vector<double>             history_old, history_new;
     };

@@ -53,6 +53,12 @@ namespace rubberdyn
        * (`Time integration/F-bar stabilization`).
        */
       std::optional<double> fbar_stabilization;
+      /**
+       * The part's own target step of selective mass scaling (ms, `Parts/
+       * <name>/Selective mass scaling time step`; 0: none); empty: the
+       * model's (`Time integration/Selective mass scaling time step`).
+       */
+      std::optional<double> selective_mass_scaling_time_step;
       /** Initial velocity of its nodes (mm/ms). */
       Tensor<1, 3> initial_velocity;
       /**

@@ -112,6 +112,13 @@ namespace rubberdyn
       double minimum_time_step = 1e-7;
       /** Mass scaling target step (ms); 0: off. */
       double mass_scaling_time_step = 0.;
+      /**
+       * Target step of selective mass scaling (ms) for the parts without
+       * their own; 0: none.
+       */
+      double selective_mass_scaling_time_step = 0.;
+      /** Relative residual of selective mass scaling's solve (-). */
+      double selective_mass_scaling_tolerance = 1e-6;
       /** Bulk viscosity coefficients (-), LS-DYNA's Q2 and Q1. */
       double bulk_viscosity_linear = 0.06, bulk_viscosity_quadratic = 1.5;
       /** F-bar volumetric stabilisation beta (-). */

@@ -9,6 +9,7 @@
 #include <rubberdyn/parameters/time_integration_parameters.h>
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
+#include <rubberdyn/time_integration/selective_mass_scaling.h>
 
 #include <iosfwd>
 #include <memory>
@@ -254,6 +255,8 @@ namespace rubberdyn
       std::vector<unsigned int> condition_of_group, direction_of_group;
       /** Added mass of mass scaling per part (kg, all ranks). */
       std::vector<double> added_mass_by_part;
+      /** What selective mass scaling did to each part. */
+      std::vector<time_integration::PartMassScaling> mass_scaling_parts;
       /** time_history.csv (rows on rank 0). */
       std::unique_ptr<postprocess::TimeHistory> history;
       /** Next history row and checkpoint times (ms). */

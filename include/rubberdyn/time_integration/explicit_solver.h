@@ -36,6 +36,8 @@ namespace rubberdyn
     using namespace dealii;
     using model::RigidBody;
 
+    class SelectiveMassScaling;
+
     /** Energies of the whole model (J = kN mm), summed over all ranks. */
     struct EnergyBalance
     {
@@ -212,6 +214,11 @@ namespace rubberdyn
       double communication = 0.;
       /** The monitor: history rows, field output, progress line. */
       double output = 0.;
+      /**
+       * The solve of selective mass scaling (part of vector_updates and
+       * communication above, not in addition).
+       */
+      double mass_scaling = 0.;
     };
 
     /** Settings of the central-difference integrator. */
@@ -365,6 +372,24 @@ namespace rubberdyn
        */
       void
       set_rigid_parts(const std::vector<RigidPartNodes> &parts);
+
+      /**
+       * Add mass to the deformation modes of some elements (selective mass
+       * scaling, SelectiveMassScaling): from now on each step solves for
+       * the accelerations of their nodes. Before the first step, after
+       * set_rigid_parts() (no rigid part's node may be in a scaled
+       * element). Collective.
+       */
+      void
+      set_selective_mass_scaling(
+        std::unique_ptr<SelectiveMassScaling> mass_scaling);
+
+      /** The selective mass scaling, or nullptr. */
+      const SelectiveMassScaling *
+      selective_mass_scaling() const
+      {
+        return mass_scaling.get();
+      }
 
       /**
        * Advance until @p end_time. After every step @p monitor is called
@@ -541,6 +566,17 @@ namespace rubberdyn
       void
       apply_constraints(const StepWeights &w);
 
+      /**
+       * Selective mass scaling: the accelerations of the scaled elements'
+       * nodes (their prescribed ones from the constraints), solved.
+       */
+      void
+      solve_scaled_accelerations(const StepWeights &w);
+
+      /** Selective mass scaling: the added mass's kinetic energy at t_n. */
+      void
+      add_scaled_kinetic_energy(const StepWeights &w);
+
       /** The kinetic energy and momentum of dofs shared by groups. */
       void
       add_shared_dofs_motion(const StepWeights &w);
@@ -634,6 +670,16 @@ namespace rubberdyn
       model::ContributionResults  results;
       StepSums                    sums;
       StepTimings                 timing;
+
+      /** Selective mass scaling, or nullptr. */
+      std::unique_ptr<SelectiveMassScaling> mass_scaling;
+      /**
+       * With selective mass scaling: the accelerations of the last step
+       * (ghosted; the next solve's start), A a (owned: the added mass's
+       * force on prescribed dofs, in their reactions), the velocities
+       * before the update and the velocities at t_n (ghosted).
+       */
+      VectorType acceleration, added_inertia, velocity_before, mean_velocity;
     };
   } // namespace time_integration
 } // namespace rubberdyn
