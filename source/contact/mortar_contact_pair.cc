@@ -323,6 +323,21 @@ namespace rubberdyn
             largest = std::max(largest, node_stiffness[n] / node_mass[n]);
           time_step = largest > 0. ? 2. / std::sqrt(2. * largest) :
                                      std::numeric_limits<double>::max();
+          // A bound on the springs' step (LS-DYNA SOFT = 1): the penalty
+          // from the nodal masses and the step where the material's would
+          // be stiffer. The step goes as 1 / sqrt(penalty).
+          penalty_factor = 1.;
+          if (time_step < definition.penalty_time_step)
+            {
+              penalty_factor =
+                (time_step / definition.penalty_time_step) *
+                (time_step / definition.penalty_time_step);
+              for (Pass &pass : passes)
+                pass.penalty *= penalty_factor;
+              for (double &k : node_stiffness)
+                k *= penalty_factor;
+              time_step = definition.penalty_time_step;
+            }
         }
     }
 
@@ -908,6 +923,14 @@ namespace rubberdyn
       return Accumulation::external_owned;
     }
 
+
+
+
+    double
+    MortarContactPair::penalty_factor() const
+    {
+      return impl->penalty_factor;
+    }
 
 
     double

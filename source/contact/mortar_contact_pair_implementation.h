@@ -591,6 +591,11 @@ namespace rubberdyn
       /** Stable step of the penalty (ms), once the masses are known (a
        * negative number until then). */
       double time_step = -1.;
+      /**
+       * The factor on the material-based penalty that keeps the springs'
+       * step at the pair's Penalty time step (1: not lowered).
+       */
+      double penalty_factor = 1.;
 
       /** Coulomb: whether the pair has friction. */
       bool coulomb = false;

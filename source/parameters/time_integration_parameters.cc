@@ -64,7 +64,7 @@ namespace rubberdyn
         "iterations are reported per part (doc/theory.md, \"Selective mass "
         "scaling\"). 0 switches it off; at most the End time.");
       prm.declare_entry(
-        "Selective mass scaling tolerance", "1e-6", Patterns::Double(0., 1.),
+        "Selective mass scaling tolerance", "1e-4", Patterns::Double(0., 1.),
         "Relative residual of the accelerations' solve of selective mass "
         "scaling (-), in the norm of the inverse diagonal of the mass "
         "matrix; momentum is kept exactly whatever its value.");

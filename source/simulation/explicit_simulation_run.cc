@@ -645,6 +645,14 @@ namespace rubberdyn
               << std::endl;
           for (const auto &plugin : postprocessors)
             plugin->final_log(log);
+          // The pairs whose Penalty time step lowered their penalty.
+          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+            if (model.contact_pairs[p].penalty_time_step > 0.)
+              log << "Contact pair " << model.contact_pairs[p].name
+                  << ": penalty times " << contact_pairs[p]->penalty_factor()
+                  << " at the end (Penalty time step "
+                  << model.contact_pairs[p].penalty_time_step << " ms)"
+                  << std::endl;
           if (max_deformable_error > 0.01)
             log << "WARNING: the energy error exceeded 1 % of the energy "
                    "through the deformable parts"

@@ -86,6 +86,18 @@ namespace rubberdyn
                               "Contact/Penalty scale factor (0.1) is the "
                               "rigid surfaces' node-to-surface stiffness "
                               "per node, which a mortar pair does not use.");
+            prm.declare_entry(
+              "Penalty time step",
+              "0",
+              Patterns::Double(0.),
+              "Explicit runs: the smallest stable step the pair's penalty "
+              "springs may have (ms; 0: no bound). Where the material-based "
+              "penalty (Penalty scale) would give a smaller one, the penalty "
+              "is lowered to the value from the nodal masses and this step, "
+              "k = 2 m / dt^2 per node (LS-DYNA SOFT = 1), so that the "
+              "contact does not set the time step: a softer contact, deeper "
+              "penetrations (doc/contact.md, \"The penalty\"). The factor is "
+              "in the log.");
             prm.declare_entry("Two-pass",
                               "false",
                               Patterns::Bool(),
@@ -199,6 +211,7 @@ namespace rubberdyn
                                  "to use it, or remove the entry");
             pair.decay         = non_negative("Decay coefficient", "");
             pair.penalty_scale = prm.get_double("Penalty scale");
+            pair.penalty_time_step = prm.get_double("Penalty time step");
             parameter_tools::require_positive(pair.penalty_scale,
                                               path + "/Penalty scale");
             pair.two_pass      = prm.get_bool("Two-pass");

@@ -1,7 +1,10 @@
 #include <rubberdyn/base/binary_io.h>
 #include <rubberdyn/time_integration/selective_mass_scaling.h>
 
+#include <rubberdyn/base/simd_math.h>
+
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -84,6 +87,198 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      constexpr unsigned int L = 4;
+      /** One double per element of a block (GCC vector extension). */
+      typedef double Lanes __attribute__((vector_size(L * sizeof(double))));
+
+      template <typename Block>
+      inline __attribute__((always_inline)) Lanes
+      lanes(const double (&values)[L])
+      {
+        Lanes v;
+        std::memcpy(&v, values, sizeof(v));
+        return v;
+      }
+
+      // y = P x for the four elements of a block (ScaledElement::
+      // deformation_part(), lane by lane).
+      template <typename Block>
+      inline __attribute__((always_inline)) void
+      deformation_part(const Block &block,
+                       const Lanes  x[8][3],
+                       Lanes        y[8][3])
+      {
+        Lanes mean[3] = {}, L_[3] = {};
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            const Lanes r0 = lanes<Block>(block.r[a][0]),
+                        r1 = lanes<Block>(block.r[a][1]),
+                        r2 = lanes<Block>(block.r[a][2]);
+            for (unsigned int d = 0; d < 3; ++d)
+              mean[d] += x[a][d];
+            L_[0] += r1 * x[a][2] - r2 * x[a][1];
+            L_[1] += r2 * x[a][0] - r0 * x[a][2];
+            L_[2] += r0 * x[a][1] - r1 * x[a][0];
+          }
+        const Lanes Jxx = lanes<Block>(block.inverse_inertia[0]),
+                    Jyy = lanes<Block>(block.inverse_inertia[1]),
+                    Jzz = lanes<Block>(block.inverse_inertia[2]),
+                    Jxy = lanes<Block>(block.inverse_inertia[3]),
+                    Jxz = lanes<Block>(block.inverse_inertia[4]),
+                    Jyz = lanes<Block>(block.inverse_inertia[5]);
+        const Lanes w0 = Jxx * L_[0] + Jxy * L_[1] + Jxz * L_[2];
+        const Lanes w1 = Jxy * L_[0] + Jyy * L_[1] + Jyz * L_[2];
+        const Lanes w2 = Jxz * L_[0] + Jyz * L_[1] + Jzz * L_[2];
+        for (unsigned int d = 0; d < 3; ++d)
+          mean[d] *= 0.125;
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            const Lanes r0 = lanes<Block>(block.r[a][0]),
+                        r1 = lanes<Block>(block.r[a][1]),
+                        r2 = lanes<Block>(block.r[a][2]);
+            y[a][0] = x[a][0] - mean[0] - (w1 * r2 - w2 * r1);
+            y[a][1] = x[a][1] - mean[1] - (w2 * r0 - w0 * r2);
+            y[a][2] = x[a][2] - mean[2] - (w0 * r1 - w1 * r0);
+          }
+      }
+
+      template <typename Block>
+      inline __attribute__((always_inline)) void
+      gather(const Block &block, const double *in, Lanes x[8][3])
+      {
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            for (unsigned int l = 0; l < L; ++l)
+              x[a][d][l] = in[block.dofs[a][d][l]];
+      }
+
+      template <typename Block>
+      inline __attribute__((always_inline)) void
+      scatter_add(const Block &block, const Lanes y[8][3], double *out)
+      {
+        for (unsigned int l = 0; l < L; ++l)
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              out[block.dofs[a][d][l]] += y[a][d][l];
+      }
+
+      // out += A in (beta P per element).
+      template <typename Block>
+      RUBBERDYN_VECTOR_CLONES void
+      add_added_mass(const std::vector<Block> &blocks,
+                     const double             *in,
+                     double                   *out)
+      {
+        Lanes x[8][3], y[8][3];
+        for (const Block &block : blocks)
+          {
+            gather(block, in, x);
+            deformation_part(block, x, y);
+            const Lanes beta = lanes<Block>(block.beta);
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                y[a][d] *= beta;
+            scatter_add(block, y, out);
+          }
+      }
+
+      // out += sum_e W_e (m I + beta P)^-1 W_e in (the preconditioner's
+      // element part).
+      template <typename Block>
+      RUBBERDYN_VECTOR_CLONES void
+      add_element_inverses(const std::vector<Block> &blocks,
+                           const double             *in,
+                           double                   *out)
+      {
+        Lanes x[8][3], y[8][3];
+        for (const Block &block : blocks)
+          {
+            gather(block, in, x);
+            for (unsigned int a = 0; a < 8; ++a)
+              {
+                const Lanes w = lanes<Block>(block.weight[a]);
+                for (unsigned int d = 0; d < 3; ++d)
+                  x[a][d] *= w;
+              }
+            deformation_part(block, x, y);
+            const Lanes deformation = lanes<Block>(block.deformation_inverse),
+                        rigid       = lanes<Block>(block.rigid_inverse);
+            for (unsigned int a = 0; a < 8; ++a)
+              {
+                const Lanes w = lanes<Block>(block.weight[a]);
+                for (unsigned int d = 0; d < 3; ++d)
+                  y[a][d] = w * (deformation * y[a][d] +
+                                 rigid * (x[a][d] - y[a][d]));
+              }
+            scatter_add(block, y, out);
+          }
+      }
+
+      // 1/2 beta |P v|^2 per lane, into energy[block][lane].
+      template <typename Block>
+      RUBBERDYN_VECTOR_CLONES void
+      added_energies(const std::vector<Block> &blocks,
+                     const double             *v,
+                     double                   *energy)
+      {
+        Lanes x[8][3], y[8][3];
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          {
+            const Block &block = blocks[b];
+            gather(block, v, x);
+            deformation_part(block, x, y);
+            Lanes sum = {};
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                sum += y[a][d] * y[a][d];
+            sum *= 0.5 * lanes<Block>(block.beta);
+            std::memcpy(energy + L * b, &sum, sizeof(sum));
+          }
+      }
+    } // namespace
+
+
+
+    void
+    SelectiveMassScaling::make_blocks()
+    {
+      blocks.clear();
+      for (unsigned int first = 0; first < elements.size(); first += L)
+        {
+          ElementBlock block;
+          block.n_active =
+            std::min<unsigned int>(L, elements.size() - first);
+          for (unsigned int l = 0; l < L; ++l)
+            {
+              const bool active = l < block.n_active;
+              const ScaledElement &e = elements[active ? first + l : first];
+              for (unsigned int a = 0; a < 8; ++a)
+                {
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      block.dofs[a][d][l] = e.dofs[a][d];
+                      block.r[a][d][l]    = e.r[a][d];
+                    }
+                  block.weight[a][l] = active ? e.weight[a] : 0.;
+                }
+              const auto &J = e.inverse_inertia;
+              const double values[6] = {
+                J[0][0], J[1][1], J[2][2], J[0][1], J[0][2], J[1][2]};
+              for (unsigned int k = 0; k < 6; ++k)
+                block.inverse_inertia[k][l] = values[k];
+              block.beta[l] = active ? e.beta : 0.;
+              block.deformation_inverse[l] = 1. / (e.mean_mass + e.beta);
+              block.rigid_inverse[l]       = 1. / e.mean_mass;
+              block.group[l]               = e.group;
+            }
+          blocks.push_back(block);
+        }
+    }
+
+
+
     SelectiveMassScaling::SelectiveMassScaling(
       std::vector<ScaledElement>                                elements,
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
@@ -154,6 +349,7 @@ namespace rubberdyn
             }
         }
       scaled_share.compress(VectorOperation::add);
+      make_blocks();
 
       rest_over_mass.assign(n_owned, 0.);
       in_scaled_element.assign(n_owned, false);
@@ -228,22 +424,10 @@ namespace rubberdyn
     SelectiveMassScaling::multiply_added_mass(const VectorType &x,
                                               VectorType       &y) const
     {
-      // y = sum_e beta_e (x_a - mean_e(x)) per direction, into owned and
-      // ghost entries, then summed to the owners.
+      // y = sum_e beta_e P_e x_e, into owned and ghost entries, then summed
+      // to the owners.
       y = 0.;
-      double *const       out = y.begin();
-      const double *const in  = x.begin();
-      double              xe[8][3], ye[8][3];
-      for (const ScaledElement &element : elements)
-        {
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              xe[a][d] = in[element.dofs[a][d]];
-          element.deformation_part(xe, ye);
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              out[element.dofs[a][d]] += element.beta * ye[a][d];
-        }
+      add_added_mass(blocks, x.begin(), y.begin());
       y.compress(VectorOperation::add);
     }
 
@@ -273,25 +457,8 @@ namespace rubberdyn
       // (D + beta) would give smooth modes, which M barely scales, beta's
       // weight too: a condition number about the scaling factor s.
       r.update_ghost_values();
-      z                   = 0.;
-      const double *const in  = r.begin();
-      double *const       out = z.begin();
-      double              xe[8][3], pe[8][3];
-      for (const ScaledElement &element : elements)
-        {
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              xe[a][d] = element.weight[a] * in[element.dofs[a][d]];
-          element.deformation_part(xe, pe);
-          // (m I + beta P)^-1 = P / (m + beta) + (I - P) / m.
-          const double deformation = 1. / (element.mean_mass + element.beta);
-          const double rigid       = 1. / element.mean_mass;
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              out[element.dofs[a][d]] +=
-                element.weight[a] * (deformation * pe[a][d] +
-                                     rigid * (xe[a][d] - pe[a][d]));
-        }
+      z = 0.;
+      add_element_inverses(blocks, r.begin(), z.begin());
       z.compress(VectorOperation::add);
       const unsigned int n_owned = partitioner->locally_owned_size();
       for (unsigned int i = 0; i < n_owned; ++i)
@@ -432,23 +599,16 @@ namespace rubberdyn
       std::vector<double> &by_group) const
     {
       // 1/2 sum_e beta_e |P_e v_e|^2 (P_e a projector).
-      const double *const v   = velocity.begin();
-      double              sum = 0.;
-      double              ve[8][3], we[8][3];
-      for (const ScaledElement &element : elements)
-        {
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              ve[a][d] = v[element.dofs[a][d]];
-          element.deformation_part(ve, we);
-          double energy = 0.;
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              energy += we[a][d] * we[a][d];
-          energy *= 0.5 * element.beta;
-          by_group[element.group] += energy;
-          sum += energy;
-        }
+      std::vector<double> &energy = energy_scratch;
+      energy.resize(L * blocks.size());
+      added_energies(blocks, velocity.begin(), energy.data());
+      double sum = 0.;
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        for (unsigned int l = 0; l < blocks[b].n_active; ++l)
+          {
+            by_group[blocks[b].group[l]] += energy[L * b + l];
+            sum += energy[L * b + l];
+          }
       return sum;
     }
 

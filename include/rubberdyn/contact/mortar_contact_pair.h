@@ -369,6 +369,13 @@ namespace rubberdyn
       double
       penalty_stiffness() const;
 
+      /**
+       * The factor by which the pair's Penalty time step lowered the
+       * material-based penalty at the last evaluation (1: not lowered).
+       */
+      double
+      penalty_factor() const;
+
       /** Where the time went, this rank. */
       const ContactPairTimings &
       timings() const;

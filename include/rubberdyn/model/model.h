@@ -192,6 +192,11 @@ namespace rubberdyn
       double decay            = 0.;
       /** Penalty scale factor s (-). */
       double penalty_scale = 1.;
+      /**
+       * The smallest stable step of the penalty springs (ms; 0: no
+       * bound): the penalty is lowered where it would be smaller.
+       */
+      double penalty_time_step = 0.;
       /** Whether the pass with slave and master swapped is added. */
       bool two_pass = false;
       /** Tied: the largest initial gap that is tied (mm). */

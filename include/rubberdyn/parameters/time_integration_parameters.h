@@ -118,7 +118,7 @@ namespace rubberdyn
        */
       double selective_mass_scaling_time_step = 0.;
       /** Relative residual of selective mass scaling's solve (-). */
-      double selective_mass_scaling_tolerance = 1e-6;
+      double selective_mass_scaling_tolerance = 1e-4;
       /** Bulk viscosity coefficients (-), LS-DYNA's Q2 and Q1. */
       double bulk_viscosity_linear = 0.06, bulk_viscosity_quadratic = 1.5;
       /** F-bar volumetric stabilisation beta (-). */
