@@ -174,6 +174,7 @@ def page(entries, sections, section, title, intro, own_pages):
             and not any(s == p or s.startswith(p + "/")
                         for p in own_pages if p != section and p and
                         (not section or p.startswith(section + "/")))]
+    intro = re.sub(r"`doc/([\w/]+\.md)`", r"[doc/\1](../\1)", intro)
     out = [f"# Parameter reference: {title}", "",
            "<!-- Written by doc/scripts/parameter_reference.py from "
            "doc/parameters.prm; do not edit by hand. -->", "",
