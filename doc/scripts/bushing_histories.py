@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The bushing's drop-tower histories (issue 10, doc/bushing.md): a figure
+"""The bushing's drop-tower histories (issue 10, doc/verification/bushing.md): a figure
 of drop_weight_force, bolt_axial_force, bolt_bending_moment,
 inner_sleeve_slip and outer_sleeve_pull_out against time for one or more
 runs, and the events that the reference study reports, measured from each

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The columns of a bushing run's time_history.csv that doc/bushing.md
+"""The columns of a bushing run's time_history.csv that doc/verification/bushing.md
 draws and quotes, into a small CSV kept beside the figures, so that a later
 run can be compared with a default-mesh run whose output directory is gone
 (a 40 ms run at n = 2 takes hours; its full history has 355 columns):

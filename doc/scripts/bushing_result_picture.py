@@ -13,7 +13,7 @@ cell's own copies of its vertices), so the fields are read as POINTS. The
 rigid parts are left out by their material ids
 (10 support, 11 drop weight: parameter_files/meshes/bushing.geo). Needs
 ParaView's Python (Debian: python3-paraview) and an X display (xvfb-run).
-A documentation tool, not part of ctest; see doc/bushing.md.
+A documentation tool, not part of ctest; see doc/verification/bushing.md.
 """
 
 import argparse
