@@ -1,5 +1,5 @@
 #!/bin/bash
-# The bushing's drop-tower test 4 (issue 10, doc/bushing.md "Benchmark"):
+# The bushing's drop-tower test 4 (issue 10, doc/verification/bushing.md "Benchmark"):
 # test 2's preload (parameter_files/bushing_test_2.prm, its explicit run cut
 # to 0.001 ms), then test 4 restarted from it for IMPACT ms of the impact;
 # reports the preload's Newton iterations and wall time, and the explicit
@@ -66,7 +66,7 @@ print(f"  {s['cells']} cells ({s['deformable_cells']} deformable), {s['dofs']} d
 print(f"  last piece: {ns:.0f} ns per element-cycle (x ranks): element forces {b['element_forces']:.0f}, contact {b['contact']:.0f} ({100 * b['contact'] / ns:.1f} %), vector updates {b['vector_updates']:.0f}, communication {b['communication']:.0f}, output {b['output']:.0f}")
 # The step shrinks during the impact (at n = 2 from 9.95e-5 ms at the
 # start to 8.6e-5 ms from 6 ms on: 40 ms took 460 861 steps, 1.15 times
-# the start's rate; doc/bushing.md "Benchmark"): a short run's
+# the start's rate; doc/verification/bushing.md "Benchmark"): a short run's
 # extrapolation is a lower bound.
 print(f"  40 ms at this cost and step: {s['time_steps'] * 40 / s['end_time']:.0f} steps, {wall * 40 / s['end_time'] / 60:.0f} minutes (a lower bound: the step shrinks during the impact)")
 print(f"  energy error {100 * s['max_energy_error']:.3g} % of the largest energy; added mass fraction {s['added_mass_fraction']}")

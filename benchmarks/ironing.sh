@@ -56,7 +56,7 @@
 # each on one idle core (10-14 minutes under load), beyond the test suite's
 # budget. It does not pass issue 8's ironing acceptance as worded (the
 # die's reaction is mu plus ploughing, 9.6 % above mu, and drifts by 4.1 %
-# with the die's distance from the slab's ends; doc/contact.md, "Ironing").
+# with the die's distance from the slab's ends; doc/verification/contact.md, "Quasi-static: ironing").
 # The longer slab (SLAB_LENGTH, e.g. 18; the default 9 is the reference's):
 # both meshes are made with gmsh from meshes/ironing.geo and
 # ironing_slab.geo with the same 0.1 elements (gmsh -setnumber L, nx) in

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The bonded tube in torsion (doc/verification.md §3) in CalculiX 2.20 and
+# The bonded tube in torsion (doc/verification/reference_solutions.md §3) in CalculiX 2.20 and
 # in rubberdyn on the same mesh, against the exact torque: time and result
 # side by side. Not a test (ccx is not a test dependency).
 #   apt-get install calculix-ccx      # once

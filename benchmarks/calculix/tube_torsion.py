@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The bonded tube in azimuthal shear (doc/verification.md section 3) in
+"""The bonded tube in azimuthal shear (doc/verification/reference_solutions.md section 3) in
 CalculiX, on rubberdyn's own mesh: writes the deck, runs nothing.
 
   tube_torsion.py MESH.msh ELEMENT OUT.inp      write the deck

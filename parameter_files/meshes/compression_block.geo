@@ -1,5 +1,5 @@
 // The block of the uniaxial compression verification
-// (doc/verification.md): an eighth of a 20 x 20 x 20 mm cube, 10 x 10 x 10
+// (doc/verification/reference_solutions.md): an eighth of a 20 x 20 x 20 mm cube, 10 x 10 x 10
 // mm, with symmetry planes x = 0, y = 0, z = 0; the top z = 10 is pressed
 // down.
 //

@@ -1,4 +1,4 @@
-// Cook's membrane (doc/verification.md): the trapezoid with the corners
+// Cook's membrane (doc/verification/reference_solutions.md): the trapezoid with the corners
 // (0, 0), (48, 44), (48, 60), (0, 44) mm, one element thick in z with unit
 // thickness (z from 0 to 1), clamped on x = 0 and loaded by a shear on
 // x = 48.

@@ -1,4 +1,4 @@
-// The bonded tube of the azimuthal-shear verification (doc/verification.md):
+// The bonded tube of the azimuthal-shear verification (doc/verification/reference_solutions.md):
 // inner radius a = 10, outer radius b = 20, length L = 10 mm, the axis
 // along z, a full annulus (a rotation of the outer surface is one
 // displacement function of x and y, no cut to close).

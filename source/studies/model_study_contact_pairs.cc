@@ -96,8 +96,8 @@ namespace rubberdyn
               "is lowered to the value from the nodal masses and this step, "
               "k = 2 m / dt^2 per node (LS-DYNA SOFT = 1), so that the "
               "contact does not set the time step: a softer contact, deeper "
-              "penetrations (doc/contact.md, \"The penalty\"). The factor is "
-              "in the log.");
+              "penetrations (doc/contact.md, section 4). The factor is in "
+              "the log.");
             prm.declare_entry("Two-pass",
                               "false",
                               Patterns::Bool(),

@@ -1,6 +1,6 @@
 // The verification meshes of the quasi-static solver
 // (parameter_files/meshes/{tube,cook_membrane,compression_block}_N.msh,
-// doc/verification.md) read by rubberdyn::io::read_gmsh_mesh(), the reader
+// doc/verification/reference_solutions.md) read by rubberdyn::io::read_gmsh_mesh(), the reader
 // every Model uses: cells, vertices, volume and area per boundary id against
 // the closed forms of the meshed geometry, and the features the solver's
 // tests rely on.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Cook's membrane by the quasi-static solver (parameter_files/
-# cook_membrane.prm; doc/verification.md §2): plane strain, nearly
+# cook_membrane.prm; doc/verification/reference_solutions.md §2): plane strain, nearly
 # incompressible neo-Hooke (K/G = 5000), 100 N of shear on the free end, the
 # top corner's vertical displacement (the History node 'tip') on the
 # structured meshes of 2, 4, 8, 16 and 32 elements a side.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The three verification set-ups of the quasi-static solver, as
-# doc/verification.md states them, are valid Models on every shipped
+# doc/verification/reference_solutions.md states them, are valid Models on every shipped
 # refinement: 'rubberdyn --check' (reads the mesh with the Model's reader,
 # builds the parts, the conditions and the model, runs nothing) accepts each
 # and reports the expected number of cells.

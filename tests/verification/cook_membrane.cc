@@ -1,4 +1,4 @@
-// Cook's membrane (doc/verification.md section 2), plane strain, nearly
+// Cook's membrane (doc/verification/reference_solutions.md section 2), plane strain, nearly
 // incompressible neo-Hooke (G = 80.1938 MPa, K = 400 942 MPa), total shear
 // load 100 N on the 16 mm x 1 mm edge x = 48 (boundary id 2): the vertical
 // displacement of the tip C = (48, 60) by the quasi-static Newton solver
@@ -28,7 +28,7 @@
 // References: the converged 6.908 mm (6.9083; Elguedj, Bazilevs, Calo and
 // Hughes, CMAME 197 (2008) 2732, 128 x 128) and the F-bar values of
 // OpenGeoSys (CooksMembraneFbar.py, 6.86 to 6.89 at 20 to 30 elements a
-// side), doc/verification.md.
+// side), doc/verification/reference_solutions.md.
 // Criteria (issue 9): for both elements the tip displacement grows
 // monotonically with n, and the finest level computed is within 1 % of
 // 6.908; every load step converged in at most 8 Newton iterations. The

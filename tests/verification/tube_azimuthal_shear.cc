@@ -34,7 +34,7 @@
 //    root of C10 + 6 C20 x + 15 C30 x^2; beyond it the solution refuses.
 // Then the curve M(phi) of the tube the quasi-static solver's test uses
 // (a = 10, b = 20, L = 10 mm, the study's C10 = 0.00055, C20 = -5e-5,
-// C30 = 1.5e-5 GPa) up to gamma(a) = 2, printed for doc/verification.md.
+// C30 = 1.5e-5 GPa) up to gamma(a) = 2, printed for doc/verification/reference_solutions.md.
 #include "tube_azimuthal_shear.h"
 
 #include <functional>

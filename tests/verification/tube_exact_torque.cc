@@ -1,5 +1,5 @@
 // tube_exact_torque PHI...: the exact torque M(phi) (kN mm) of the bonded
-// tube of doc/verification.md §3 (a = 10, b = 20, L = 10 mm, the reference
+// tube of doc/verification/reference_solutions.md §3 (a = 10, b = 20, L = 10 mm, the reference
 // study's Yeoh constants C10 = 0.00055, C20 = -5e-5, C30 = 1.5e-5 GPa) at
 // each rotation phi (rad) of the outer surface, and the axial force N (kN)
 // the ends carry at K/G -> infinity, one "phi M gamma_a N" line

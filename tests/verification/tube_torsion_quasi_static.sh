@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The bonded tube in azimuthal shear by the quasi-static solver
-# (parameter_files/tube_torsion.prm, doc/verification.md §3) against its
+# (parameter_files/tube_torsion.prm, doc/verification/reference_solutions.md §3) against its
 # exact finite-strain solution (doc/theory.md §9;
 # tests/verification/tube_azimuthal_shear.h, through the tool
 # tube_exact_torque): the torque outer_moment_z (kN mm) at every load step
