@@ -354,19 +354,9 @@ namespace rubberdyn
               own++ :
               body_of_part[model.part_index(definition.rigid_part)]);
         }
-      setup::add_rigid_surface_contacts(model,
-                                        body_of_surface,
-                                        contacts,
-                                        contact_forces);
-      for (const auto &forces : contact_forces)
-        contributions.push_back(forces.get());
-      // Mortar contact between the mesh's surfaces, one per pair.
-      for (const ContactPairDefinition &pair : model.contact_pairs)
-        {
-          contact_pairs.push_back(
-            std::make_unique<contact::MortarContactPair>(model, pair));
-          contributions.push_back(contact_pairs.back().get());
-        }
+      setup::add_rigid_surfaces(
+        model, body_of_surface, contacts, contact_forces, contributions);
+      setup::add_contact_pairs(model, contact_pairs, contributions);
 
       // Boundary conditions: one constraint group per component.
       constraints =

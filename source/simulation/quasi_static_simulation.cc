@@ -269,19 +269,9 @@ namespace rubberdyn
               }
             surface_body.push_back(body_of_part[p]);
           }
-      setup::add_rigid_surface_contacts(model,
-                                        surface_body,
-                                        contacts,
-                                        contact_forces);
-      for (const auto &forces : contact_forces)
-        contributions.push_back(forces.get());
-      // Mortar contact between the mesh's surfaces, one per pair.
-      for (const ContactPairDefinition &pair : model.contact_pairs)
-        {
-          contact_pairs.push_back(
-            std::make_unique<contact::MortarContactPair>(model, pair));
-          contributions.push_back(contact_pairs.back().get());
-        }
+      setup::add_rigid_surfaces(
+        model, surface_body, contacts, contact_forces, contributions);
+      setup::add_contact_pairs(model, contact_pairs, contributions);
       history_nodes =
         std::make_unique<postprocess::HistoryNodes>(model,
                                                     output.history_nodes);
