@@ -10,6 +10,7 @@
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/simulation/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_view.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
@@ -460,7 +461,7 @@ namespace rubberdyn
       // run's.
       const unsigned long               first_step = s.step();
       const double                      first_time = s.time();
-      const postprocess::SimulationView view{model, s, *elements, bodies};
+      const ExplicitView                view(model, s, *elements, bodies);
       double     last_row_time    = -1.;
       auto       last_progress    = std::chrono::steady_clock::now();
       std::vector<double> values;
