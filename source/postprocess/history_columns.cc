@@ -83,6 +83,44 @@ namespace rubberdyn
 
 
 
+    InternalEnergyColumns::InternalEnergyColumns(
+      const std::vector<std::string> &part_names)
+      : part_names(part_names)
+    {}
+
+
+
+    std::string
+    InternalEnergyColumns::name() const
+    {
+      return "internal energy";
+    }
+
+
+
+    std::vector<std::string>
+    InternalEnergyColumns::history_columns() const
+    {
+      std::vector<std::string> columns = {"internal_energy"};
+      for (const std::string &part : part_names)
+        columns.push_back(part + "_internal_energy");
+      return columns;
+    }
+
+
+
+    void
+    InternalEnergyColumns::history_values(const SimulationView &view,
+                                          std::vector<double>  &values)
+    {
+      values.push_back(view.internal_energy());
+      const std::vector<double> &by_group = view.internal_energy_by_group();
+      for (unsigned int p = 0; p < part_names.size(); ++p)
+        values.push_back(p < by_group.size() ? by_group[p] : 0.);
+    }
+
+
+
     BoundaryReactionColumns::BoundaryReactionColumns(
       const std::vector<std::string> & names,
       const std::vector<unsigned int> &condition_of_group,

@@ -35,7 +35,7 @@ namespace rubberdyn
      * the internal energy, the pretension sections, the rigid bodies and
      * the elements. A column that reads only these means the same in both
      * schemes (postprocess::ReactionAndLoadColumns, PretensionSectionColumns,
-     * HistoryNodeColumns, ContactPairColumns).
+     * HistoryNodeColumns, ContactPairColumns, InternalEnergyColumns).
      *
      * What only explicit dynamics has (velocities, kinetic energy, the
      * works and momenta, added mass, the time step) comes through
@@ -45,8 +45,8 @@ namespace rubberdyn
      * explicit-only plugin and says so through explicit_solver_of().
      *
      * The simulations implement it over their solvers
-     * (simulation::ExplicitView); a plugin never sees the simulation that
-     * made it.
+     * (simulation::ExplicitView, simulation::QuasiStaticView); a plugin never
+     * sees the simulation that made it.
      */
     class SimulationView
     {
@@ -138,6 +138,11 @@ namespace rubberdyn
      * stop. Whatever it accumulates over the run (maxima, times, its next
      * output time) is its own checkpoint state, so that a restarted run
      * continues it exactly.
+     *
+     * An explicit run calls all of these; a quasi-static run calls
+     * history_columns(), history_values() (at its rows' converged states),
+     * after_step() (after every converged load step) and finish(): its
+     * run_summary.json and log are its own, and it has no checkpoints.
      */
     class Postprocessor
     {
