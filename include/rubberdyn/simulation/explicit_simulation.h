@@ -185,6 +185,87 @@ namespace rubberdyn
 
     private:
       /**
+       * The elements: one group per part (its law and formulation), cut by
+       * the pretension sections (locked: their shortenings come with the
+       * preload, start_from()); every cross section must cut one.
+       */
+      void
+      build_elements();
+
+      /**
+       * Mass scaling: the density factor of every element, (target step /
+       * stable step)^2 where its stable step is below `Time integration/
+       * Mass scaling time step`, else 1 (collective).
+       *
+       * @throws InputError naming the Mass scaling time step if the largest
+       *   factor is not a usable number.
+       */
+      std::vector<double>
+      mass_scaling_factors() const;
+
+      /**
+       * Refuse, before anything runs (also in `--check`), a Minimum time
+       * step above the first stable step and an End time that would take
+       * more than parameters::TimeIntegration::max_time_steps steps.
+       */
+      void
+      check_number_of_steps() const;
+
+      /** added_mass_by_part from the density factors (all ranks). */
+      void
+      set_added_mass(const std::vector<double> &density_scaling);
+
+      /**
+       * One model::RigidPartMass for the cells of all rigid parts (from
+       * @p mass_of_part), appended to @p contributions; none without rigid
+       * parts.
+       */
+      void
+      add_rigid_part_mass(
+        const std::vector<VectorType>           &mass_of_part,
+        std::vector<model::ForceContribution *> &contributions);
+
+      /**
+       * The bodies: those of the rigid surfaces that have their own, in
+       * their order, then one per rigid part (its free directions and
+       * initial velocity; mass, centre and inertia come in
+       * attach_rigid_parts()); sets body_of_part.
+       */
+      void
+      build_bodies();
+
+      /** The body (in `bodies`) that carries each rigid surface. */
+      std::vector<unsigned int>
+      body_of_surface() const;
+
+      /**
+       * The central-difference solver over @p contributions, the
+       * constraints and the bodies, with the parts' masses for its sums per
+       * part.
+       */
+      void
+      build_solver(
+        const std::vector<model::ForceContribution *> &contributions,
+        const std::vector<VectorType>                 &mass_of_part);
+
+      /**
+       * The parts' initial velocities (a node shared by two parts takes
+       * the velocity of the later one).
+       */
+      void
+      set_initial_velocities();
+
+      /**
+       * The rigid parts' nodes follow their bodies, whose mass, centre and
+       * inertia are set here from the solver's lumped mass.
+       *
+       * @throws InputError naming the boundary condition that holds a node
+       *   of a rigid part (it would fight the body).
+       */
+      void
+      attach_rigid_parts(const std::vector<VectorType> &mass_of_part);
+
+      /**
        * The smallest stable step of the elements in the reference
        * configuration, with the mass scaling's added density, before the
        * scale factor (ms, the same on all ranks; collective). The largest
