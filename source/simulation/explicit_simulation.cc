@@ -14,6 +14,7 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_columns.h>
+#include <rubberdyn/postprocess/history_expressions.h>
 #include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/interaction_columns.h>
 #include <rubberdyn/postprocess/time_history.h>

@@ -10,6 +10,7 @@
 #include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/time_integration/explicit_solver.h>
 
+#include <chrono>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -37,7 +38,9 @@ namespace rubberdyn
   namespace postprocess
   {
     class TimeHistory;
-  }
+    class HistoryExpressions;
+    class FieldOutputWriter;
+  } // namespace postprocess
 
   namespace model
   {
@@ -286,6 +289,98 @@ namespace rubberdyn
       void
       write_history_plot(const std::vector<std::string> &columns) const;
 
+      /** The clock and the testing aid of a run (run()'s steps). */
+      struct RunProgress
+      {
+        /** When run() started, and when it last wrote a progress line. */
+        std::chrono::steady_clock::time_point wall_start, last_line;
+        /** The time this run starts from (a restart's: its checkpoint's). */
+        double first_time = 0.;
+        /** RunOptions::simulate_crash_at. */
+        double crash_time = 0.;
+      };
+
+      /**
+       * A restart's first step (Output/Restart from checkpoint): read and
+       * check the checkpoint's study.txt (read_checkpoint_header()).
+       * Returns the number of history rows stored with it and the number
+       * of this restart (0, 0 without a restart). Collective.
+       */
+      std::pair<unsigned long, unsigned int>
+      begin_restart();
+
+      /**
+       * Put the ParaView output (postprocess::FieldOutputWriter, with the
+       * contact pairs' pressure, gap and slip) first among the plugins: a
+       * restart writes a series of its own, named after @p restarts.
+       */
+      void
+      add_field_writer(const unsigned int restarts);
+
+      /**
+       * The columns of time_history.csv: time, time_step, the plugins'
+       * and those of Output/History expressions (sets expressions).
+       */
+      std::vector<std::string>
+      history_columns();
+
+      /**
+       * Open time_history.csv: a new one, or for a restart, after reading
+       * every rank's checkpoint state (read_checkpoint_state()), the file
+       * cut to the @p history_rows rows written before the checkpoint.
+       */
+      void
+      open_history(const std::vector<std::string> &columns,
+                   const unsigned long             history_rows,
+                   std::ostream                   &log);
+
+      /**
+       * Write the row of the current state (collective: plugins sum over
+       * the ranks), echoed to @p log with Output/Echo history.
+       */
+      void
+      write_history_row(const postprocess::SimulationView &view,
+                        std::ostream                      &log);
+
+      /**
+       * What the solver calls after every step: the energy-error records,
+       * a history row when due, the plugins' after_step(), a stop asked by
+       * a plugin (throws StopRequested after the last row), the progress
+       * line.
+       */
+      void
+      monitor_step(const postprocess::SimulationView &view,
+                   RunProgress                       &progress,
+                   std::ostream                      &log);
+
+      /**
+       * Run the solver to the End time, in segments that end at the
+       * checkpoint times, writing the checkpoints. Returns whether a
+       * postprocessor stopped the run.
+       *
+       * @throws std::runtime_error if the solver fails, after writing the
+       *   last state.
+       */
+      bool
+      advance_to_end(const postprocess::SimulationView &view,
+                     RunProgress                       &progress,
+                     const unsigned int                 restarts,
+                     std::ostream                      &log);
+
+      /**
+       * The run's own entries of run_summary.json (sizes, steps, wall time
+       * and cost per element-cycle, energy errors, masses, initial
+       * penetrations); the plugins' follow. Collective.
+       */
+      std::vector<postprocess::SummaryEntry>
+      summary_entries(const bool          stopped,
+                      const unsigned long first_step,
+                      const double        wall) const;
+
+      /** The end of the log: "Finished:", the plugins' lines, warnings. */
+      void
+      log_finish(std::ostream &log) const;
+
       /** Write a checkpoint of the current state (collective). */
       void
       write_checkpoint(const unsigned long history_rows,
@@ -337,6 +432,12 @@ namespace rubberdyn
       std::vector<double> added_mass_by_part;
       /** time_history.csv (rows on rank 0). */
       std::unique_ptr<postprocess::TimeHistory> history;
+      /** Output/History expressions, or nullptr (history_columns()). */
+      std::unique_ptr<postprocess::HistoryExpressions> expressions;
+      /** The ParaView output among the postprocessors (run()). */
+      postprocess::FieldOutputWriter *field_writer = nullptr;
+      /** Time of the last history row (ms; -1 before the first). */
+      double last_row_time = -1.;
       /** Next history row and checkpoint times (ms). */
       double next_history = 0., next_checkpoint = 0.;
       /**
