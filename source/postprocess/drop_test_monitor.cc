@@ -112,20 +112,21 @@ namespace rubberdyn
     {
       // One MPI sum per row (never per step) for the two face probes.
       double face_integrals[2] = {
-        top_face.local_integral(view.solver.displacement()),
-        bottom_face.local_integral(view.solver.displacement())};
+        top_face.local_integral(view.displacement()),
+        bottom_face.local_integral(view.displacement())};
       Utilities::MPI::sum(ArrayView<const double>(face_integrals, 2),
                           comm,
                           ArrayView<double>(face_integrals, 2));
       const double top    = -face_integrals[0] / top_face.area;
       const double bottom = -face_integrals[1] / bottom_face.area;
       max_rubber_compression = std::max(max_rubber_compression, top - bottom);
-      const model::RigidBody &body = view.bodies[impactor];
+      const model::RigidBody &body = view.bodies()[impactor];
       values.push_back(-body.displacement[2]);
       values.push_back(body.contact_force[2]);
       values.push_back(top);
       values.push_back(bottom);
-      values.push_back(view.solver.energies().friction_work);
+      values.push_back(
+        explicit_solver_of(view, name()).energies().friction_work);
     }
 
 
@@ -133,8 +134,8 @@ namespace rubberdyn
     void
     DropTestMonitor::after_step(const SimulationView &view)
     {
-      const double            t    = view.solver.time();
-      const model::RigidBody &body = view.bodies[impactor];
+      const double            t    = view.time();
+      const model::RigidBody &body = view.bodies()[impactor];
       max_force = std::max(max_force, body.contact_force[2]);
       if (-body.displacement[2] > max_displacement)
         {
@@ -180,7 +181,7 @@ namespace rubberdyn
         return s.str();
       };
       entries.emplace_back("stopped_after_rebound", stop ? "true" : "false");
-      entries.emplace_back("rubber_mass", text(view.solver.physical_mass()));
+      entries.emplace_back("rubber_mass", text(explicit_solver_of(view, name()).physical_mass()));
       entries.emplace_back("top_face_area", text(top_face.area));
       entries.emplace_back("bottom_face_area", text(bottom_face.area));
       entries.emplace_back("max_impactor_force", text(max_force));

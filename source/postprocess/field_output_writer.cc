@@ -80,7 +80,7 @@ namespace rubberdyn
     FieldOutputWriter::after_step(const SimulationView &view)
     {
       if (interval > 0. &&
-          view.solver.time() >= next_output * (1. - 1e-12))
+          view.time() >= next_output * (1. - 1e-12))
         {
           write(view);
           next_output += interval;
@@ -143,9 +143,9 @@ namespace rubberdyn
     void
     FieldOutputWriter::write(const SimulationView &view)
     {
-      const model::Model &model = view.model;
+      const model::Model &model = view.model();
       const auto          cell_data =
-        solid_cell_data(model, view.elements, view.solver.displacement());
+        solid_cell_data(model, view.elements(), view.displacement());
       std::vector<VectorType>                scalar_values(
         nodal_scalar_sources.size());
       std::vector<NodalScalars>              nodal_scalars;
@@ -157,15 +157,15 @@ namespace rubberdyn
           nodal_scalars.push_back(
             {nodal_scalar_sources[s].first, &scalar_values[s]});
         }
-      fields.write(model.dof_handler, view.solver.displacement(),
-                   view.solver.velocity(), cell_data, view.solver.time(),
-                   nodal_scalars);
-      last_output_time = view.solver.time();
+      fields.write(model.dof_handler, view.displacement(),
+                   explicit_solver_of(view, name()).velocity(), cell_data,
+                   view.time(), nodal_scalars);
+      last_output_time = view.time();
 
       const auto now = minimum_jacobian(model.dof_handler,
-                                        view.solver.displacement(), comm);
+                                        view.displacement(), comm);
       if (now.first < min_jacobian_gauss_points)
-        time_of_min_jacobian = view.solver.time();
+        time_of_min_jacobian = view.time();
       min_jacobian_gauss_points = std::min(min_jacobian_gauss_points, now.first);
       min_jacobian_centres      = std::min(min_jacobian_centres, now.second);
     }

@@ -68,15 +68,55 @@ namespace rubberdyn
     EnergyColumns::history_values(const SimulationView &view,
                                   std::vector<double> &  values)
     {
-      const auto &e = view.solver.energies();
+      const time_integration::ExplicitSolver &solver =
+        explicit_solver_of(view, name());
+      const auto &e = solver.energies();
       for (const double value :
            {e.kinetic, e.internal, e.external_work, e.contact,
-            e.bulk_viscosity_work, view.solver.added_mass(),
+            e.bulk_viscosity_work, solver.added_mass(),
             e.relative_error()})
         values.push_back(value);
       if (with_friction_work)
         values.push_back(e.friction_work);
       values.push_back(e.deformable_relative_error());
+    }
+
+
+
+    InternalEnergyColumns::InternalEnergyColumns(
+      const std::vector<std::string> &part_names)
+      : part_names(part_names)
+    {}
+
+
+
+    std::string
+    InternalEnergyColumns::name() const
+    {
+      return "internal energy";
+    }
+
+
+
+    std::vector<std::string>
+    InternalEnergyColumns::history_columns() const
+    {
+      std::vector<std::string> columns = {"internal_energy"};
+      for (const std::string &part : part_names)
+        columns.push_back(part + "_internal_energy");
+      return columns;
+    }
+
+
+
+    void
+    InternalEnergyColumns::history_values(const SimulationView &view,
+                                          std::vector<double>  &values)
+    {
+      values.push_back(view.internal_energy());
+      const std::vector<double> &by_group = view.internal_energy_by_group();
+      for (unsigned int p = 0; p < part_names.size(); ++p)
+        values.push_back(p < by_group.size() ? by_group[p] : 0.);
     }
 
 
@@ -120,8 +160,8 @@ namespace rubberdyn
     {
       std::vector<dealii::Tensor<1, 3>> force(names.size()),
         moment(names.size());
-      const std::vector<double> &reactions = view.solver.reactions();
-      const auto &moments = view.solver.reaction_moments();
+      const std::vector<double> &reactions = view.reactions();
+      const auto                &moments   = view.reaction_moments();
       for (unsigned int g = 0; g < condition_of_group.size(); ++g)
         {
           force[condition_of_group[g]][direction_of_group[g]] += reactions[g];
@@ -169,15 +209,12 @@ namespace rubberdyn
     PretensionSectionColumns::history_values(const SimulationView &view,
                                              std::vector<double>  &values)
     {
-      std::vector<double> force =
-        view.elements.section_forces(view.solver.displacement());
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(force),
-                                  view.model.comm,
-                                  dealii::ArrayView<double>(force));
+      const std::vector<double>  force      = view.section_forces();
+      const std::vector<double> &shortening = view.section_shortenings();
       for (unsigned int s = 0; s < section_names.size(); ++s)
         {
           values.push_back(force[s]);
-          values.push_back(view.elements.section_shortenings()[s]);
+          values.push_back(shortening[s]);
         }
     }
 
@@ -221,12 +258,19 @@ namespace rubberdyn
                                         std::vector<double>  &values)
     {
       const std::vector<model::CrossSection> &sections =
-        view.model.cross_sections;
+        view.model().cross_sections;
+      // (The section resultants are the hexahedra's: a cross section of a
+      // mixed u-p part is refused when the model is read.)
+      const auto *hexes =
+        dynamic_cast<const elements::SolidHexElements *>(&view.elements());
+      AssertThrow(hexes != nullptr,
+                  dealii::ExcMessage("Cross sections need the F-bar or "
+                                     "displacement elements"));
       std::vector<elements::SectionPlane> planes;
       for (const model::CrossSection &section : sections)
         planes.push_back({section.point, section.normal, section.part});
       const std::vector<elements::SectionResultant> local =
-        view.elements.section_resultants(view.solver.displacement(), planes);
+        hexes->section_resultants(view.displacement(), planes);
       // One sum over the ranks: force, moment about the origin, centre sum
       // and the number of cut elements of each section.
       std::vector<double> sums;
@@ -241,7 +285,7 @@ namespace rubberdyn
           sums.push_back(r.n_cut);
         }
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums),
-                                  view.model.comm,
+                                  view.model().comm,
                                   dealii::ArrayView<double>(sums));
       for (unsigned int s = 0; s < sections.size(); ++s)
         {
@@ -305,9 +349,11 @@ namespace rubberdyn
     PartColumns::history_values(const SimulationView &view,
                                 std::vector<double> &  values)
     {
-      const auto &motion   = view.solver.motion_by_group();
-      const auto &internal = view.solver.internal_energy_by_group();
-      const auto &work     = view.solver.work_by_group();
+      const time_integration::ExplicitSolver &solver =
+        explicit_solver_of(view, name());
+      const auto &motion   = solver.motion_by_group();
+      const auto &internal = solver.internal_energy_by_group();
+      const auto &work     = solver.work_by_group();
       for (unsigned int p = 0; p < part_names.size(); ++p)
         {
           values.push_back(motion[p].kinetic_energy);
@@ -374,10 +420,10 @@ namespace rubberdyn
     RigidBodyColumns::history_values(const SimulationView &view,
                                      std::vector<double> &  values)
     {
-      const auto &energies = view.solver.body_energies();
+      const auto &energies = explicit_solver_of(view, name()).body_energies();
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const model::RigidBody &body = view.bodies[b];
+          const model::RigidBody &body = view.bodies()[b];
           add_vector_values(body.reference_position + body.displacement,
                             values);
           add_vector_values(body.velocity, values);

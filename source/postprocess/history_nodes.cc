@@ -227,7 +227,7 @@ namespace rubberdyn
     HistoryNodeColumns::history_values(const SimulationView &view,
                                        std::vector<double>  &values)
     {
-      nodes->append_values(view.solver.displacement(), values);
+      nodes->append_values(view.displacement(), values);
     }
   } // namespace postprocess
 } // namespace rubberdyn

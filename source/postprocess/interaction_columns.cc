@@ -109,7 +109,8 @@ namespace rubberdyn
                                              std::vector<double>  &values)
     {
       std::vector<double>        work(model.boundary_conditions.size(), 0.);
-      const std::vector<double> &by_group = view.solver.reaction_works();
+      const std::vector<double> &by_group =
+        explicit_solver_of(view, name()).reaction_works();
       for (unsigned int g = 0; g < by_group.size(); ++g)
         work[condition_of_group[g]] += by_group[g];
       if (loads != nullptr)

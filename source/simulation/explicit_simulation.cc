@@ -16,6 +16,7 @@
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/postprocess/history_columns.h>
+#include <rubberdyn/postprocess/history_expressions.h>
 #include <rubberdyn/postprocess/history_nodes.h>
 #include <rubberdyn/postprocess/interaction_columns.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -202,13 +203,62 @@ namespace rubberdyn
       , title(title)
       , model_parameters(model_parameters)
     {
-      const MPI_Comm comm = model.comm;
-
       // Slave nodes that start inside their master surface: reported,
       // moved out or refused before anything is built from the mesh (a
       // hand-off's load path has done it already).
       contact::resolve_initial_penetrations(model);
 
+      build_elements();
+      const std::vector<double> density_scaling = mass_scaling_factors();
+      element_forces =
+        std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
+      // Selective mass scaling: mass on the deformation modes of the
+      // elements below their part's target step; their stable steps grow.
+      SelectiveMassScalingSetup mass_scaling =
+        setup::selective_mass_scaling(model, time_integration, *elements);
+      mass_scaling_parts = mass_scaling.parts;
+      if (mass_scaling.scaling)
+        elements->set_time_step_factors(mass_scaling.time_step_factors);
+      check_number_of_steps();
+      set_added_mass(density_scaling);
+
+      // The contributions in the order the solver sums their forces:
+      // elements, the rigid parts' mass, rigid surfaces, contact pairs,
+      // surface loads.
+      std::vector<model::ForceContribution *> contributions = {
+        element_forces.get()};
+      const std::vector<VectorType> mass_of_part = setup::part_masses(model);
+      add_rigid_part_mass(mass_of_part, contributions);
+      build_bodies();
+      setup::add_rigid_surfaces(
+        model, body_of_surface(), contacts, contact_forces, contributions);
+      setup::add_contact_pairs(model, contact_pairs, contributions);
+
+      // Boundary conditions: one constraint group per component.
+      constraints =
+        std::make_unique<KinematicConstraints>(model.dof_handler,
+                                               model.partitioner);
+      setup::add_kinematic_constraints(model, *constraints, condition_of_group,
+                                       direction_of_group);
+
+      // Pressures and tractions: one contribution for all of them.
+      surface_loads = setup::surface_loads(model, condition_of_load);
+      if (surface_loads)
+        contributions.push_back(surface_loads.get());
+
+      build_solver(contributions, mass_of_part);
+      set_initial_velocities();
+      attach_rigid_parts(mass_of_part);
+      if (mass_scaling.scaling)
+        explicit_solver->set_selective_mass_scaling(
+          std::move(mass_scaling.scaling));
+    }
+
+
+
+    void
+    ExplicitSimulation::build_elements()
+    {
       // Elements: one group per part (its law and formulation).
       const std::vector<elements::ElementGroup> groups =
         setup::element_groups(model, time_integration);
@@ -223,7 +273,13 @@ namespace rubberdyn
         setup::cut_pretension_sections(model, *elements);
       // Cross sections: each must cut an element of its part.
       setup::check_cross_sections(model, *elements);
+    }
 
+
+
+    std::vector<double>
+    ExplicitSimulation::mass_scaling_factors() const
+    {
       // Mass scaling: elements whose stable step is below the target get
       // added density.
       std::vector<double> density_scaling(elements->n_elements(), 1.);
@@ -247,84 +303,97 @@ namespace rubberdyn
         for (const double factor : density_scaling)
           largest = std::max(largest, factor);
         parameter_tools::require_usable(
-          Utilities::MPI::max(largest, comm),
+          Utilities::MPI::max(largest, model.comm),
           "Time integration/Mass scaling time step",
           "the density factor (target step / stable step)^2 of the smallest "
           "element",
           "");
       }
-      element_forces =
-        std::make_unique<elements::SolidHexForces>(*elements, density_scaling);
-      // Selective mass scaling: mass on the deformation modes of the
-      // elements below their part's target step; their stable steps grow.
-      SelectiveMassScalingSetup mass_scaling =
-        setup::selective_mass_scaling(model, time_integration, *elements);
-      mass_scaling_parts = mass_scaling.parts;
-      if (mass_scaling.scaling)
-        elements->set_time_step_factors(mass_scaling.time_step_factors);
-      {
-        // Refuse a run that could never end (End time = 1e308) before
-        // anything runs, in `--check` too. The step changes as the model
-        // deforms (contact and compression shrink it), so the count is an
-        // estimate; the limit is four orders above any real run.
-        const double first_step =
-          time_integration.time_step_scale * smallest_element_time_step();
-        // The solver's first step is at most first_step (contact can only
-        // shorten it): a Minimum time step above it stops every run at its
-        // first step, after writing the state.
-        if (time_integration.minimum_time_step > first_step)
-          throw InputError(
-            "Time integration/Minimum time step",
-            "is " +
-              parameter_tools::format_short(
-                time_integration.minimum_time_step) +
-              " ms, above the first stable time step of " +
-              parameter_tools::format_short(first_step) +
-              " ms: the run would stop at its first step");
-        const double n_steps = time_integration.end_time / first_step;
-        if (n_steps > parameters::TimeIntegration::max_time_steps)
-          throw InputError(
-            "Time integration/End time",
-            "is " + parameter_tools::format_short(time_integration.end_time) +
-              " ms: at the first stable time step of " +
-              parameter_tools::format_short(first_step) +
-              " ms the run would take " +
-              parameter_tools::format_short(n_steps) +
-              " steps, more than the limit of " +
-              parameter_tools::format_short(
-                parameters::TimeIntegration::max_time_steps) +
-              "; shorten the End time");
-      }
+      return density_scaling;
+    }
+
+
+
+    void
+    ExplicitSimulation::check_number_of_steps() const
+    {
+      // Refuse a run that could never end (End time = 1e308) before
+      // anything runs, in `--check` too. The step changes as the model
+      // deforms (contact and compression shrink it), so the count is an
+      // estimate; the limit is four orders above any real run.
+      const double first_step =
+        time_integration.time_step_scale * smallest_element_time_step();
+      // The solver's first step is at most first_step (contact can only
+      // shorten it): a Minimum time step above it stops every run at its
+      // first step, after writing the state.
+      if (time_integration.minimum_time_step > first_step)
+        throw InputError(
+          "Time integration/Minimum time step",
+          "is " +
+            parameter_tools::format_short(
+              time_integration.minimum_time_step) +
+            " ms, above the first stable time step of " +
+            parameter_tools::format_short(first_step) +
+            " ms: the run would stop at its first step");
+      const double n_steps = time_integration.end_time / first_step;
+      if (n_steps > parameters::TimeIntegration::max_time_steps)
+        throw InputError(
+          "Time integration/End time",
+          "is " + parameter_tools::format_short(time_integration.end_time) +
+            " ms: at the first stable time step of " +
+            parameter_tools::format_short(first_step) +
+            " ms the run would take " +
+            parameter_tools::format_short(n_steps) +
+            " steps, more than the limit of " +
+            parameter_tools::format_short(
+              parameters::TimeIntegration::max_time_steps) +
+            "; shorten the End time");
+    }
+
+
+
+    void
+    ExplicitSimulation::set_added_mass(const std::vector<double> &density_scaling)
+    {
+      // The mass with the scaled densities less the physical mass.
       added_mass_by_part = elements->mass_by_group(density_scaling);
-      {
-        const std::vector<double> physical = elements->mass_by_group(
-          std::vector<double>(density_scaling.size(), 1.));
-        for (unsigned int i = 0; i < added_mass_by_part.size(); ++i)
-          added_mass_by_part[i] -= physical[i];
-        Utilities::MPI::sum(ArrayView<const double>(added_mass_by_part),
-                            comm,
-                            ArrayView<double>(added_mass_by_part));
-      }
+      const std::vector<double> physical = elements->mass_by_group(
+        std::vector<double>(density_scaling.size(), 1.));
+      for (unsigned int i = 0; i < added_mass_by_part.size(); ++i)
+        added_mass_by_part[i] -= physical[i];
+      Utilities::MPI::sum(ArrayView<const double>(added_mass_by_part),
+                          model.comm,
+                          ArrayView<double>(added_mass_by_part));
+    }
 
-      std::vector<model::ForceContribution *> contributions = {
-        element_forces.get()};
-      const std::vector<VectorType> mass_of_part = setup::part_masses(model);
-      {
-        VectorType rigid_mass(model.partitioner);
-        bool       any_rigid = false;
-        for (unsigned int p = 0; p < model.parts.size(); ++p)
-          if (model.parts[p].rigid)
-            {
-              rigid_mass += mass_of_part[p];
-              any_rigid = true;
-            }
-        if (any_rigid)
+
+
+    void
+    ExplicitSimulation::add_rigid_part_mass(
+      const std::vector<VectorType>           &mass_of_part,
+      std::vector<model::ForceContribution *> &contributions)
+    {
+      // The rigid parts' cells give only their lumped mass.
+      VectorType rigid_mass(model.partitioner);
+      bool       any_rigid = false;
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        if (model.parts[p].rigid)
           {
-            rigid_part_mass = std::make_unique<RigidPartMass>(rigid_mass);
-            contributions.push_back(rigid_part_mass.get());
+            rigid_mass += mass_of_part[p];
+            any_rigid = true;
           }
-      }
+      if (any_rigid)
+        {
+          rigid_part_mass = std::make_unique<RigidPartMass>(rigid_mass);
+          contributions.push_back(rigid_part_mass.get());
+        }
+    }
 
+
+
+    void
+    ExplicitSimulation::build_bodies()
+    {
       // The bodies: those of the rigid surfaces that have their own, in
       // their order, then those of the rigid parts.
       for (const RigidSurfaceDefinition &definition : model.rigid_surfaces)
@@ -352,7 +421,13 @@ namespace rubberdyn
             body.mass = 1.;
             bodies.push_back(body);
           }
+    }
 
+
+
+    std::vector<unsigned int>
+    ExplicitSimulation::body_of_surface() const
+    {
       // One contact per rigid surface, each surface carried by its body.
       std::vector<unsigned int> body_of_surface;
       for (unsigned int s = 0, own = 0; s < model.rigid_surfaces.size(); ++s)
@@ -363,32 +438,16 @@ namespace rubberdyn
               own++ :
               body_of_part[model.part_index(definition.rigid_part)]);
         }
-      setup::add_rigid_surface_contacts(model,
-                                        body_of_surface,
-                                        contacts,
-                                        contact_forces);
-      for (const auto &forces : contact_forces)
-        contributions.push_back(forces.get());
-      // Mortar contact between the mesh's surfaces, one per pair.
-      for (const ContactPairDefinition &pair : model.contact_pairs)
-        {
-          contact_pairs.push_back(
-            std::make_unique<contact::MortarContactPair>(model, pair));
-          contributions.push_back(contact_pairs.back().get());
-        }
+      return body_of_surface;
+    }
 
-      // Boundary conditions: one constraint group per component.
-      constraints =
-        std::make_unique<KinematicConstraints>(model.dof_handler,
-                                               model.partitioner);
-      setup::add_kinematic_constraints(model, *constraints, condition_of_group,
-                                       direction_of_group);
 
-      // Pressures and tractions: one contribution for all of them.
-      surface_loads = setup::surface_loads(model, condition_of_load);
-      if (surface_loads)
-        contributions.push_back(surface_loads.get());
 
+    void
+    ExplicitSimulation::build_solver(
+      const std::vector<model::ForceContribution *> &contributions,
+      const std::vector<VectorType>                 &mass_of_part)
+    {
       time_integration::ExplicitSettings settings;
       settings.time_step_scale   = time_integration.time_step_scale;
       settings.minimum_time_step = time_integration.minimum_time_step;
@@ -396,10 +455,16 @@ namespace rubberdyn
       settings.n_groups          = std::max<unsigned int>(1, model.parts.size());
       explicit_solver = std::make_unique<time_integration::ExplicitSolver>(
         model.dof_handler, contributions, bodies, constraints.get(),
-        model.partitioner, settings, comm);
+        model.partitioner, settings, model.comm);
       if (model.parts.size() > 1)
         explicit_solver->set_group_masses(mass_of_part);
+    }
 
+
+
+    void
+    ExplicitSimulation::set_initial_velocities()
+    {
       // Initial velocities of the parts (a node shared by two parts takes
       // the velocity of the later one).
       VectorType initial_velocity(model.partitioner);
@@ -420,7 +485,14 @@ namespace rubberdyn
             }
       }
       explicit_solver->set_initial_velocity(initial_velocity);
+    }
 
+
+
+    void
+    ExplicitSimulation::attach_rigid_parts(
+      const std::vector<VectorType> &mass_of_part)
+    {
       // Rigid parts: their nodes follow their bodies. A boundary condition
       // on them would fight the body: refused, naming both.
       std::vector<time_integration::RigidPartNodes> rigid_nodes;
@@ -458,7 +530,7 @@ namespace rubberdyn
                 "motion says (fixed, or free directions), not by boundary "
                 "conditions";
           const std::vector<std::string> messages =
-            Utilities::MPI::all_gather(comm, message);
+            Utilities::MPI::all_gather(model.comm, message);
           for (const std::string &m : messages)
             if (!m.empty())
               {
@@ -467,9 +539,6 @@ namespace rubberdyn
               }
           explicit_solver->set_rigid_parts(rigid_nodes);
         }
-      if (mass_scaling.scaling)
-        explicit_solver->set_selective_mass_scaling(
-          std::move(mass_scaling.scaling));
     }
 
 

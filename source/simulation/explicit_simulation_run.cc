@@ -10,6 +10,7 @@
 #include <rubberdyn/elements/solid_hex_forces.h>
 #include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/simulation/explicit_simulation.h>
+#include <rubberdyn/simulation/explicit_view.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/history_expressions.h>
@@ -367,18 +368,9 @@ namespace rubberdyn
 
 
 
-    void
-    ExplicitSimulation::run(std::ostream &log)
+    std::pair<unsigned long, unsigned int>
+    ExplicitSimulation::begin_restart()
     {
-      namespace fs          = std::filesystem;
-      const MPI_Comm comm   = model.comm;
-      const bool     root   = Utilities::MPI::this_mpi_process(comm) == 0;
-      const auto wall_start = std::chrono::steady_clock::now();
-      time_integration::ExplicitSolver &s = *explicit_solver;
-
-      log_model(log);
-      fs::create_directories(output.directory);
-
       // The restart's header first: it names the ParaView series.
       unsigned long history_rows = 0;
       unsigned int  restarts     = 0;
@@ -393,36 +385,47 @@ namespace rubberdyn
             {
               message = e.message;
             }
-          throw_if_any(comm, "Output/Restart from checkpoint", message);
+          throw_if_any(model.comm, "Output/Restart from checkpoint", message);
           ++restarts;
         }
-      auto field_writer = std::make_unique<postprocess::FieldOutputWriter>(
+      return {history_rows, restarts};
+    }
+
+
+
+    void
+    ExplicitSimulation::add_field_writer(const unsigned int restarts)
+    {
+      auto writer = std::make_unique<postprocess::FieldOutputWriter>(
         output.directory,
         restarts == 0 ? "solution" :
                         "solution_restart_" + std::to_string(restarts),
         output.field_output_format,
         output.field_output_interval,
-        comm);
-      postprocess::FieldOutputWriter &fields = *field_writer;
+        model.comm);
       if (!contact_pairs.empty())
-        fields.add_nodal_scalars(
+        writer->add_nodal_scalars(
           {{"contact_pressure", "contact_gap", "contact_slip"}},
           [this](VectorType &values) {
             for (const auto &pair : contact_pairs)
               pair->add_surface_fields(values);
           });
-      postprocessors.insert(postprocessors.begin(), std::move(field_writer));
-      next_history     = 0.;
-      next_checkpoint  = output.checkpoint_interval;
-      max_energy_error  = 0.;
-      deformable_errors = time_integration::DeformableErrorRecord();
+      field_writer = writer.get();
+      // (First: its state leads every checkpoint's plugin states.)
+      postprocessors.insert(postprocessors.begin(), std::move(writer));
+    }
 
+
+
+    std::vector<std::string>
+    ExplicitSimulation::history_columns()
+    {
       std::vector<std::string> columns = {"time", "time_step"};
       for (const auto &plugin : postprocessors)
         for (const std::string &column : plugin->history_columns())
           columns.push_back(column);
       // Output/History expressions: columns of the others of their row.
-      std::unique_ptr<postprocess::HistoryExpressions> expressions;
+      expressions.reset();
       if (!output.history_expressions.empty())
         {
           expressions = std::make_unique<postprocess::HistoryExpressions>(
@@ -430,92 +433,125 @@ namespace rubberdyn
           for (const std::string &name : expressions->names())
             columns.push_back(name);
         }
+      return columns;
+    }
+
+
+
+    void
+    ExplicitSimulation::open_history(const std::vector<std::string> &columns,
+                                     const unsigned long history_rows,
+                                     std::ostream       &log)
+    {
+      const MPI_Comm    comm = model.comm;
+      const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
       const std::string history_path = output.directory + "/time_history.csv";
-      if (output.restart)
+      if (!output.restart)
         {
-          read_checkpoint_state();
-          // Only now, with the checkpoint accepted, the history is cut to
-          // the rows written before it.
-          std::string message;
-          try
-            {
-              history = std::make_unique<postprocess::TimeHistory>(
-                history_path, columns, root, history_rows);
-            }
-          catch (const std::exception &e)
-            {
-              message = e.what();
-            }
-          throw_if_any(comm, "Output/Restart from checkpoint", message);
-          if (root)
-            log << "  Restarted from the checkpoint at t = " << s.time()
-                << " ms, step " << s.step() << std::endl;
+          history = std::make_unique<postprocess::TimeHistory>(history_path,
+                                                               columns,
+                                                               root);
+          return;
         }
-      else
-        history = std::make_unique<postprocess::TimeHistory>(history_path,
-                                                             columns, root);
+      read_checkpoint_state();
+      // Only now, with the checkpoint accepted, the history is cut to the
+      // rows written before it.
+      std::string message;
+      try
+        {
+          history = std::make_unique<postprocess::TimeHistory>(history_path,
+                                                               columns,
+                                                               root,
+                                                               history_rows);
+        }
+      catch (const std::exception &e)
+        {
+          message = e.what();
+        }
+      throw_if_any(comm, "Output/Restart from checkpoint", message);
+      if (root)
+        log << "  Restarted from the checkpoint at t = "
+            << explicit_solver->time() << " ms, step "
+            << explicit_solver->step() << std::endl;
+    }
 
-      // Where this run (a restart: its continuation) starts: the wall time,
-      // the progress estimate and the cost per element-cycle are this
-      // run's.
-      const unsigned long               first_step = s.step();
-      const double                      first_time = s.time();
-      const postprocess::SimulationView view{model, s, *elements, bodies};
-      double     last_row_time    = -1.;
-      auto       last_progress    = std::chrono::steady_clock::now();
-      std::vector<double> values;
-      const auto write_row = [&]() {
-        values.assign({s.time(), s.time_step()});
-        for (const auto &plugin : postprocessors)
-          plugin->history_values(view, values);
-        if (expressions)
-          expressions->append_values(values);
-        const std::string row = history->write_row(values);
-        if (root && output.echo_history)
-          log << row;
-        last_row_time = s.time();
-      };
+
+
+    void
+    ExplicitSimulation::write_history_row(
+      const postprocess::SimulationView &view,
+      std::ostream                      &log)
+    {
+      const time_integration::ExplicitSolver &s = *explicit_solver;
+      std::vector<double> values = {s.time(), s.time_step()};
+      for (const auto &plugin : postprocessors)
+        plugin->history_values(view, values);
+      if (expressions)
+        expressions->append_values(values);
+      const std::string row = history->write_row(values);
+      if (Utilities::MPI::this_mpi_process(model.comm) == 0 &&
+          output.echo_history)
+        log << row;
+      last_row_time = s.time();
+    }
+
+
+
+    void
+    ExplicitSimulation::monitor_step(const postprocess::SimulationView &view,
+                                     RunProgress  &progress,
+                                     std::ostream &log)
+    {
+      const time_integration::ExplicitSolver &s = *explicit_solver;
+      const double                            t = s.time();
       // --simulate-crash-at (RunOptions): a testing aid, doc/restarts.md.
-      const double crash_time = run_options().simulate_crash_at;
-      const auto   monitor    = [&]() {
-        const double t = s.time();
-        if (t >= crash_time)
-          std::raise(SIGKILL);
-        max_energy_error =
-          std::max(max_energy_error, s.energies().absolute_error());
-        deformable_errors.add(s.energies().absolute_error(),
-                              s.energies().largest_deformable);
-        if (t >= next_history * (1. - 1e-12))
+      if (t >= progress.crash_time)
+        std::raise(SIGKILL);
+      max_energy_error =
+        std::max(max_energy_error, s.energies().absolute_error());
+      deformable_errors.add(s.energies().absolute_error(),
+                            s.energies().largest_deformable);
+      if (t >= next_history * (1. - 1e-12))
+        {
+          write_history_row(view, log);
+          next_history += output.history_output_interval;
+        }
+      for (const auto &plugin : postprocessors)
+        plugin->after_step(view);
+      for (const auto &plugin : postprocessors)
+        if (plugin->stop_requested())
           {
-            write_row();
-            next_history += output.history_output_interval;
+            if (last_row_time < t)
+              write_history_row(view, log);
+            throw StopRequested();
           }
-        for (const auto &plugin : postprocessors)
-          plugin->after_step(view);
-        for (const auto &plugin : postprocessors)
-          if (plugin->stop_requested())
-            {
-              if (last_row_time < t)
-                write_row();
-              throw StopRequested();
-            }
-        const auto now = std::chrono::steady_clock::now();
-        if (root && output.progress_interval > 0. &&
-            now - last_progress >
-              std::chrono::duration<double>(output.progress_interval))
-          {
-            const double elapsed =
-              std::chrono::duration<double>(now - wall_start).count();
-            log << "  step " << s.step() << ", t = " << t
-                << " ms, dt = " << s.time_step() << " ms, about "
-                << static_cast<int>(elapsed * (time_integration.end_time - t) /
-                                    std::max(t - first_time, 1e-12))
-                << " s left" << std::endl;
-            last_progress = now;
-          }
-      };
+      // The progress line: this run's (a restart's continuation) speed.
+      const auto now = std::chrono::steady_clock::now();
+      if (Utilities::MPI::this_mpi_process(model.comm) == 0 &&
+          output.progress_interval > 0. &&
+          now - progress.last_line >
+            std::chrono::duration<double>(output.progress_interval))
+        {
+          const double elapsed =
+            std::chrono::duration<double>(now - progress.wall_start).count();
+          log << "  step " << s.step() << ", t = " << t
+              << " ms, dt = " << s.time_step() << " ms, about "
+              << static_cast<int>(elapsed * (time_integration.end_time - t) /
+                                  std::max(t - progress.first_time, 1e-12))
+              << " s left" << std::endl;
+          progress.last_line = now;
+        }
+    }
 
-      bool stopped = false;
+
+
+    bool
+    ExplicitSimulation::advance_to_end(const postprocess::SimulationView &view,
+                                       RunProgress       &progress,
+                                       const unsigned int restarts,
+                                       std::ostream      &log)
+    {
+      time_integration::ExplicitSolver &s = *explicit_solver;
       try
         {
           // Run in segments that end at the checkpoint times (a segmented
@@ -526,7 +562,7 @@ namespace rubberdyn
               const double stop = output.checkpoint_interval > 0. ?
                                     std::min(end_time, next_checkpoint) :
                                     end_time;
-              s.run(stop, monitor);
+              s.run(stop, [&]() { monitor_step(view, progress, log); });
               if (output.checkpoint_interval > 0. &&
                   s.time() >= next_checkpoint * (1. - 1e-12))
                 {
@@ -537,16 +573,52 @@ namespace rubberdyn
         }
       catch (const StopRequested &)
         {
-          stopped = true;
+          return true;
         }
       catch (const time_integration::SolverFailure &failure)
         {
-          fields.write(view);
+          field_writer->write(view);
           history->make_durable();
           throw std::runtime_error(title + " stopped: " + failure.what() +
                                    "; the last state is in " +
-                                   fields.index_file());
+                                   field_writer->index_file());
         }
+      return false;
+    }
+
+
+
+    void
+    ExplicitSimulation::run(std::ostream &log)
+    {
+      const MPI_Comm comm = model.comm;
+      RunProgress    progress;
+      progress.wall_start = std::chrono::steady_clock::now();
+      progress.last_line  = progress.wall_start;
+      progress.crash_time = run_options().simulate_crash_at;
+      time_integration::ExplicitSolver &s = *explicit_solver;
+
+      log_model(log);
+      std::filesystem::create_directories(output.directory);
+
+      const auto [history_rows, restarts] = begin_restart();
+      add_field_writer(restarts);
+      next_history      = 0.;
+      next_checkpoint   = output.checkpoint_interval;
+      max_energy_error  = 0.;
+      deformable_errors = time_integration::DeformableErrorRecord();
+      const std::vector<std::string> columns = history_columns();
+      open_history(columns, history_rows, log);
+
+      // Where this run (a restart: its continuation) starts: the wall time,
+      // the progress estimate and the cost per element-cycle are this
+      // run's.
+      const unsigned long first_step = s.step();
+      progress.first_time             = s.time();
+      const ExplicitView view(model, s, *elements, bodies);
+      last_row_time = -1.;
+
+      const bool stopped = advance_to_end(view, progress, restarts, log);
       for (const auto &plugin : postprocessors)
         plugin->finish(view);
       // The largest error of the run relative to its largest energy, and
@@ -557,11 +629,34 @@ namespace rubberdyn
         s.energies().largest_energy > 0. ?
           max_energy_error / s.energies().largest_energy :
           0.;
-      // run_summary.json: the run's figures, then the plugins' entries.
       const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                      wall_start)
+                                      progress.wall_start)
           .count();
+      std::vector<postprocess::SummaryEntry> entries =
+        summary_entries(stopped, first_step, wall);
+      for (const auto &plugin : postprocessors)
+        plugin->summary(view, entries);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          postprocess::write_run_summary(output.directory + "/run_summary.json",
+                                         entries);
+          // A picture of the main columns beside the table.
+          history->make_durable();
+          write_history_plot(columns);
+          log_finish(log);
+        }
+    }
+
+
+
+    std::vector<postprocess::SummaryEntry>
+    ExplicitSimulation::summary_entries(const bool          stopped,
+                                        const unsigned long first_step,
+                                        const double        wall) const
+    {
+      const MPI_Comm                          comm = model.comm;
+      const time_integration::ExplicitSolver &s    = *explicit_solver;
       // The cells whose forces the elements compute: a rigid part's cells
       // only give its mass (the bushing's rounded drop weight and support
       // have 1200 at its default mesh).
@@ -618,46 +713,42 @@ namespace rubberdyn
          json_number(s.added_mass() / s.physical_mass())},
         {"friction_work", json_number(s.energies().friction_work)},
         {"physical_mass", json_number(s.physical_mass())}};
-      {
-        std::string by_part = "{";
-        for (unsigned int p = 0; p < model.parts.size(); ++p)
-          by_part += (p > 0 ? ", \"" : "\"") + model.parts[p].name +
-                     "\": " + json_number(added_mass_by_part[p]);
-        entries.emplace_back("added_mass_by_part", by_part + "}");
-      }
+      std::string by_part = "{";
+      for (unsigned int p = 0; p < model.parts.size(); ++p)
+        by_part += (p > 0 ? ", \"" : "\"") + model.parts[p].name +
+                   "\": " + json_number(added_mass_by_part[p]);
+      entries.emplace_back("added_mass_by_part", by_part + "}");
       entries.emplace_back("initial_penetrations",
                            setup::initial_penetrations_json(model));
+      return entries;
+    }
+
+
+
+    void
+    ExplicitSimulation::log_finish(std::ostream &log) const
+    {
+      const time_integration::ExplicitSolver &s = *explicit_solver;
+      // Wall time and speed are in run_summary.json only, so that the log
+      // of a run is reproducible.
+      log << "Finished: " << s.step() << " steps to t = " << s.time()
+          << " ms; largest energy error " << max_energy_error * 100.
+          << " % of the largest energy, " << max_deformable_error * 100.
+          << " % of the energy through the deformable parts" << std::endl;
       for (const auto &plugin : postprocessors)
-        plugin->summary(view, entries);
-      if (root)
-        {
-          postprocess::write_run_summary(output.directory + "/run_summary.json",
-                                         entries);
-          // A picture of the main columns beside the table.
-          history->make_durable();
-          write_history_plot(columns);
-          // Wall time and speed are in run_summary.json only, so that the
-          // log of a run is reproducible.
-          log << "Finished: " << s.step() << " steps to t = " << s.time()
-              << " ms; largest energy error " << max_energy_error * 100.
-              << " % of the largest energy, " << max_deformable_error * 100.
-              << " % of the energy through the deformable parts"
+        plugin->final_log(log);
+      // The pairs whose Penalty time step lowered their penalty.
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+        if (model.contact_pairs[p].penalty_time_step > 0.)
+          log << "Contact pair " << model.contact_pairs[p].name
+              << ": penalty times " << contact_pairs[p]->penalty_factor()
+              << " at the end (Penalty time step "
+              << model.contact_pairs[p].penalty_time_step << " ms)"
               << std::endl;
-          for (const auto &plugin : postprocessors)
-            plugin->final_log(log);
-          // The pairs whose Penalty time step lowered their penalty.
-          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-            if (model.contact_pairs[p].penalty_time_step > 0.)
-              log << "Contact pair " << model.contact_pairs[p].name
-                  << ": penalty times " << contact_pairs[p]->penalty_factor()
-                  << " at the end (Penalty time step "
-                  << model.contact_pairs[p].penalty_time_step << " ms)"
-                  << std::endl;
-          if (max_deformable_error > 0.01)
-            log << "WARNING: the energy error exceeded 1 % of the energy "
-                   "through the deformable parts"
-                << std::endl;
-        }
+      if (max_deformable_error > 0.01)
+        log << "WARNING: the energy error exceeded 1 % of the energy "
+               "through the deformable parts"
+            << std::endl;
     }
   } // namespace simulation
 } // namespace rubberdyn

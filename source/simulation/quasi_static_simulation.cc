@@ -11,12 +11,16 @@
 #include <rubberdyn/model/gravity_load.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/simulation/quasi_static_simulation.h>
+#include <rubberdyn/simulation/quasi_static_view.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/postprocess/field_output.h>
 #include <rubberdyn/postprocess/field_output_writer.h>
 #include <rubberdyn/postprocess/contact_pair_columns.h>
+#include <rubberdyn/postprocess/history_columns.h>
 #include <rubberdyn/postprocess/history_nodes.h>
+#include <rubberdyn/postprocess/interaction_columns.h>
+#include <rubberdyn/postprocess/load_path_body_columns.h>
 #include <rubberdyn/postprocess/run_summary.h>
 #include <rubberdyn/postprocess/time_history_plot.h>
 #include <rubberdyn/postprocess/time_history.h>
@@ -282,19 +286,9 @@ namespace rubberdyn
               }
             surface_body.push_back(body_of_part[p]);
           }
-      setup::add_rigid_surface_contacts(model,
-                                        surface_body,
-                                        contacts,
-                                        contact_forces);
-      for (const auto &forces : contact_forces)
-        contributions.push_back(forces.get());
-      // Mortar contact between the mesh's surfaces, one per pair.
-      for (const ContactPairDefinition &pair : model.contact_pairs)
-        {
-          contact_pairs.push_back(
-            std::make_unique<contact::MortarContactPair>(model, pair));
-          contributions.push_back(contact_pairs.back().get());
-        }
+      setup::add_rigid_surfaces(
+        model, surface_body, contacts, contact_forces, contributions);
+      setup::add_contact_pairs(model, contact_pairs, contributions);
       history_nodes =
         std::make_unique<postprocess::HistoryNodes>(model,
                                                     output.history_nodes);
@@ -311,6 +305,69 @@ namespace rubberdyn
         bodies_follow_load_path(),
         rigid_parts);
       set_roundoff_floor();
+      add_postprocessors();
+    }
+
+
+
+    void
+    QuasiStaticSimulation::add_postprocessors()
+    {
+      std::vector<std::string> names;
+      for (const Part &part : model.parts)
+        names.push_back(part.name);
+      postprocessors.push_back(
+        std::make_unique<postprocess::InternalEnergyColumns>(names));
+      names.clear();
+      for (const BoundaryCondition &bc : model.boundary_conditions)
+        names.push_back(bc.name);
+      postprocessors.push_back(
+        std::make_unique<postprocess::ReactionAndLoadColumns>(
+          std::make_unique<postprocess::BoundaryReactionColumns>(
+            names, condition_of_group, direction_of_group),
+          surface_loads.get(),
+          condition_of_load));
+      if (!model.pretension_sections.empty())
+        {
+          names.clear();
+          for (const PretensionSection &section : model.pretension_sections)
+            names.push_back(section.name);
+          postprocessors.push_back(
+            std::make_unique<postprocess::PretensionSectionColumns>(names));
+        }
+      // The rigid surfaces where their bodies are, the rigid parts' forces
+      // and the poses of those in equilibrium (no velocities or energies:
+      // the explicit run's RigidBodyColumns have those).
+      std::vector<const contact::RigidSurfaceForces *> surfaces;
+      for (const auto &forces : contact_forces)
+        surfaces.push_back(forces.get());
+      postprocessors.push_back(
+        std::make_unique<postprocess::LoadPathBodyColumns>(
+          model,
+          surface_body,
+          surfaces,
+          held_part_groups,
+          equilibrium_parts,
+          newton->rigid_part_poses()));
+      // The pairs at the converged state (their last evaluation).
+      if (!contact_pairs.empty())
+        {
+          names.clear();
+          std::vector<const contact::MortarContactPair *> pairs;
+          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+            {
+              names.push_back(model.contact_pairs[p].name);
+              pairs.push_back(contact_pairs[p].get());
+            }
+          postprocessors.push_back(
+            std::make_unique<postprocess::ContactPairColumns>(pairs,
+                                                              names,
+                                                              model.comm));
+        }
+      if (!output.history_nodes.empty())
+        postprocessors.push_back(
+          std::make_unique<postprocess::HistoryNodeColumns>(
+            std::move(history_nodes)));
     }
 
 
@@ -577,6 +634,134 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /**
+       * The ParaView fields of the converged states of a load path: the
+       * displacement, the elements' cell averages and the contact pairs'
+       * pressure, gap and slip (their last evaluation: the converged
+       * state); no velocity. Written every Field output interval of
+       * pseudo-time and always for the last state, also of a run that
+       * fails (write() skips a state it has written).
+       */
+      class ConvergedStateFields
+      {
+      public:
+        ConvergedStateFields(
+          const Model                                                    &model,
+          const elements::ImplicitElements                               &elements,
+          const std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs,
+          const parameters::Output                                       &output)
+          : model(model)
+          , elements(elements)
+          , pairs(pairs)
+          , interval(output.field_output_interval)
+          , fields(output.directory,
+                   "solution",
+                   model.comm,
+                   output.field_output_format)
+        {}
+
+        /** Whether the state at @p time is due (the interval's next). */
+        bool
+        due(const double time) const
+        {
+          return interval > 0. && time >= next_field * (1. - 1e-12);
+        }
+
+        /** Write the state of @p s unless written already (collective). */
+        void
+        write(const time_integration::QuasiStaticSolver &s)
+        {
+          if (s.time() == last_field)
+            return;
+          VectorType                             no_velocity(model.partitioner);
+          VectorType                             pair_fields;
+          std::vector<postprocess::NodalScalars> nodal_scalars;
+          if (!pairs.empty())
+            {
+              pair_fields.reinit(model.partitioner);
+              for (const auto &pair : pairs)
+                pair->add_surface_fields(pair_fields);
+              pair_fields.update_ghost_values();
+              nodal_scalars.push_back(
+                {{{"contact_pressure", "contact_gap", "contact_slip"}},
+                 &pair_fields});
+            }
+          fields.write(model.dof_handler,
+                       s.displacement(),
+                       no_velocity,
+                       postprocess::solid_cell_data(model,
+                                                    elements,
+                                                    s.displacement()),
+                       s.time(),
+                       nodal_scalars);
+          last_field = s.time();
+          if (interval > 0.)
+            next_field =
+              (std::floor(s.time() / interval + 1e-9) + 1.) * interval;
+        }
+
+        /** The index file ParaView opens. */
+        std::string
+        index_file() const
+        {
+          return fields.index_file();
+        }
+
+      private:
+        const Model                                                    &model;
+        const elements::ImplicitElements                               &elements;
+        const std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs;
+        const double                                                    interval;
+        postprocess::FieldOutput                                        fields;
+        double next_field = 0., last_field = -1.;
+      };
+    } // namespace
+
+
+
+    std::vector<std::string>
+    QuasiStaticSimulation::history_columns() const
+    {
+      std::vector<std::string> columns = {"time", "newton_iterations"};
+      for (const auto &plugin : postprocessors)
+        for (const std::string &column : plugin->history_columns())
+          columns.push_back(column);
+      return columns;
+    }
+
+
+
+    void
+    QuasiStaticSimulation::write_history_row(
+      const postprocess::SimulationView &view,
+      postprocess::TimeHistory          &history,
+      std::ostream                      &log)
+    {
+      const time_integration::QuasiStaticSolver &s = *newton;
+      std::vector<double> values = {s.time(),
+                                    s.steps().empty() ?
+                                      0. :
+                                      double(s.steps().back().iterations)};
+      for (const auto &plugin : postprocessors)
+        plugin->history_values(view, values);
+      const std::string row = history.write_row(values);
+      if (Utilities::MPI::this_mpi_process(model.comm) == 0 &&
+          output.echo_history)
+        log << row;
+      // Rows at every converged step (interval 0), else at the first step
+      // on or after each multiple of the interval (pseudo-time).
+      next_row =
+        output.history_output_interval > 0. ?
+          (std::floor(s.time() / output.history_output_interval + 1e-9) +
+           1.) *
+            output.history_output_interval :
+          0.;
+    }
+
+
+
     void
     QuasiStaticSimulation::run(std::ostream &log)
     {
@@ -590,244 +775,68 @@ namespace rubberdyn
       log_model(log);
       std::filesystem::create_directories(output.directory);
 
-      std::vector<std::string> columns = {"time",
-                                          "newton_iterations",
-                                          "internal_energy"};
-      for (const Part &part : model.parts)
-        columns.push_back(part.name + "_internal_energy");
-      const char *xyz[3] = {"_x", "_y", "_z"};
-      for (const BoundaryCondition &bc : model.boundary_conditions)
-        for (const std::string quantity : {"_force", "_moment"})
-          for (unsigned int d = 0; d < 3; ++d)
-            columns.push_back(bc.name + quantity + xyz[d]);
-      for (const PretensionSection &section : model.pretension_sections)
-        for (const std::string quantity : {"_force", "_shortening"})
-          columns.push_back(section.name + quantity);
-      for (const RigidSurfaceDefinition &surface : model.rigid_surfaces)
-        for (const std::string quantity : {"_position", "_force"})
-          for (unsigned int d = 0; d < 3; ++d)
-            columns.push_back(surface.name + quantity + xyz[d]);
-      for (const Part &part : model.parts)
-        if (part.rigid)
-          for (unsigned int d = 0; d < 3; ++d)
-            columns.push_back(part.name + "_force" + xyz[d]);
-      for (const unsigned int p : equilibrium_parts)
-        for (const std::string quantity : {"_position", "_rotation"})
-          for (unsigned int d = 0; d < 3; ++d)
-            columns.push_back(model.parts[p].name + quantity + xyz[d]);
-      std::unique_ptr<postprocess::ContactPairColumns> pair_columns;
-      if (!contact_pairs.empty())
-        {
-          std::vector<std::string>                        names;
-          std::vector<const contact::MortarContactPair *> pairs;
-          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-            {
-              names.push_back(model.contact_pairs[p].name);
-              pairs.push_back(contact_pairs[p].get());
-            }
-          pair_columns = std::make_unique<postprocess::ContactPairColumns>(
-            pairs, names, model.comm);
-          for (const std::string &column : pair_columns->history_columns())
-            columns.push_back(column);
-        }
-      for (const std::string &column : history_nodes->columns())
-        columns.push_back(column);
+      const std::vector<std::string> columns = history_columns();
       postprocess::TimeHistory history(output.directory + "/time_history.csv",
                                        columns,
                                        root);
-
       time_integration::QuasiStaticSolver &s = *newton;
-      // Rows at every converged step (interval 0), else at the first step
-      // on or after each multiple of the interval (pseudo-time).
-      double     next_row  = 0.;
-      const auto write_row = [&]() {
-        std::vector<double> values = {s.time(),
-                                      s.steps().empty() ?
-                                        0. :
-                                        double(s.steps().back().iterations),
-                                      s.internal_energy()};
-        for (unsigned int p = 0; p < model.parts.size(); ++p)
-          values.push_back(p < s.internal_energy_by_group().size() ?
-                             s.internal_energy_by_group()[p] :
-                             0.);
-        std::vector<Tensor<1, 3>> force(model.boundary_conditions.size()),
-          moment(model.boundary_conditions.size());
-        for (unsigned int g = 0; g < condition_of_group.size(); ++g)
-          {
-            force[condition_of_group[g]][direction_of_group[g]] +=
-              s.reactions()[g];
-            moment[condition_of_group[g]] += s.reaction_moments()[g];
-          }
-        // A load's columns are its resultant on the body (collective).
-        if (surface_loads)
-          {
-            const std::vector<SurfaceLoads::Resultant> resultants =
-              surface_loads->resultants();
-            for (unsigned int l = 0; l < resultants.size(); ++l)
-              {
-                force[condition_of_load[l]] += resultants[l].force;
-                moment[condition_of_load[l]] += resultants[l].moment;
-              }
-          }
-        for (unsigned int c = 0; c < force.size(); ++c)
-          {
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(force[c][d]);
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(moment[c][d]);
-          }
-        for (unsigned int k = 0; k < s.section_forces().size(); ++k)
-          {
-            values.push_back(s.section_forces()[k]);
-            values.push_back(s.section_shortenings()[k]);
-          }
-        // The surfaces: their point where their body is, and the force of
-        // the solid on them (this rank's nodes, summed).
-        // (One reduction for all of them.)
-        std::vector<double> sums(3 * model.rigid_surfaces.size());
-        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
-          for (unsigned int d = 0; d < 3; ++d)
-            sums[3 * k + d] =
-              contact_forces[k]->last_result().force_on_plane[0][d];
-        Utilities::MPI::sum(ArrayView<const double>(sums),
-                            model.comm,
-                            ArrayView<double>(sums));
-        std::vector<Tensor<1, 3>> surface_force(model.rigid_surfaces.size());
-        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
-          for (unsigned int d = 0; d < 3; ++d)
-            surface_force[k][d] = sums[3 * k + d];
-        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
-          {
-            const Point<3> position =
-              model.rigid_surfaces[k].surface.point +
-              s.bodies()[surface_body[k]].displacement;
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(position[d]);
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(surface_force[k][d]);
-          }
-        // A rigid part: the force of the solid on it through its nodes
-        // (minus the reaction of its held nodes) and through its surfaces.
-        std::vector<Tensor<1, 3>> part_force(model.parts.size());
-        for (const HeldPartGroup &held : held_part_groups)
-          part_force[held.part][held.direction] -= s.reactions()[held.group];
-        for (unsigned int k = 0; k < model.rigid_surfaces.size(); ++k)
-          if (!model.rigid_surfaces[k].rigid_part.empty())
-            part_force[model.part_index(model.rigid_surfaces[k].rigid_part)] +=
-              surface_force[k];
-        for (unsigned int p = 0; p < model.parts.size(); ++p)
-          if (model.parts[p].rigid)
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(part_force[p][d]);
-        // The parts in equilibrium: their centre of mass and their
-        // rotation vector.
-        for (const RigidBody &pose : s.rigid_part_poses())
-          {
-            const Point<3>     position = pose.current_reference_position();
-            const Tensor<1, 3> rotation = rotation_vector(pose.rotation);
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(position[d]);
-            for (unsigned int d = 0; d < 3; ++d)
-              values.push_back(rotation[d]);
-          }
-        // The pairs at the converged state (their last evaluation).
-        if (pair_columns)
-          pair_columns->append_values(values);
-        history_nodes->append_values(s.displacement(), values);
-        const std::string row = history.write_row(values);
-        if (root && output.echo_history)
-          log << row;
-        next_row =
-          output.history_output_interval > 0. ?
-            (std::floor(s.time() / output.history_output_interval + 1e-9) +
-             1.) *
-              output.history_output_interval :
-            0.;
-      };
-
-      // ParaView fields of the converged states: every Field output
-      // interval of pseudo-time, and always the last one, also of a run
-      // that fails.
-      auto fields = std::make_unique<postprocess::FieldOutput>(
-        output.directory, "solution", model.comm, output.field_output_format);
-      double     next_field = 0., last_field = -1.;
-      const auto write_fields = [&]() {
-        if (s.time() == last_field)
-          return;
-        VectorType no_velocity(model.partitioner);
-        // The pairs' pressure, gap and slip (their last evaluation: the
-        // converged state).
-        VectorType                             pair_fields;
-        std::vector<postprocess::NodalScalars> nodal_scalars;
-        if (!contact_pairs.empty())
-          {
-            pair_fields.reinit(model.partitioner);
-            for (const auto &pair : contact_pairs)
-              pair->add_surface_fields(pair_fields);
-            pair_fields.update_ghost_values();
-            nodal_scalars.push_back(
-              {{{"contact_pressure", "contact_gap", "contact_slip"}},
-               &pair_fields});
-          }
-        fields->write(model.dof_handler,
-                      s.displacement(),
-                      no_velocity,
-                      postprocess::solid_cell_data(model,
-                                                   *elements,
-                                                   s.displacement()),
-                      s.time(),
-                      nodal_scalars);
-        last_field = s.time();
-        if (output.field_output_interval > 0.)
-          next_field =
-            (std::floor(s.time() / output.field_output_interval + 1e-9) + 1.) *
-            output.field_output_interval;
-      };
+      const QuasiStaticView                view(model, s, *elements);
+      ConvergedStateFields fields(model, *elements, contact_pairs, output);
 
       s.initialize();
-      write_row();
+      next_row = 0.;
+      write_history_row(view, history, log);
       if (output.field_output_interval > 0.)
-        write_fields();
+        fields.write(s);
       const double end_time = time_integration.quasi_static_end_time;
       try
         {
           s.run(end_time, log, [&]() {
             if (s.time() >= next_row * (1. - 1e-12) ||
                 s.time() >= end_time * (1. - 1e-12))
-              write_row();
-            if (output.field_output_interval > 0. &&
-                s.time() >= next_field * (1. - 1e-12))
-              write_fields();
+              write_history_row(view, history, log);
+            if (fields.due(s.time()))
+              fields.write(s);
+            for (const auto &plugin : postprocessors)
+              plugin->after_step(view);
           });
-          write_fields();
+          fields.write(s);
+          for (const auto &plugin : postprocessors)
+            plugin->finish(view);
           history.make_durable();
           write_summary_and_plot(columns, wall_seconds(), "");
         }
       catch (const time_integration::QuasiStaticFailure &failure)
         {
-          write_fields();
+          fields.write(s);
           history.make_durable();
           write_summary_and_plot(columns, wall_seconds(), failure.what());
           throw std::runtime_error(
             "Quasi-static run failed: " + std::string(failure.what()) +
             " (its rows are in " + output.directory +
             "/time_history.csv, the last converged state in " +
-            fields->index_file() + ")");
+            fields.index_file() + ")");
         }
       if (root)
-        {
-          const auto [iterations, linear, cutbacks, wasted] =
-            iteration_totals(s);
-          // (The converged attempts' iterations first: scripts read the
-          // number before "Newton".)
-          log << "Finished: " << s.steps().size()
-              << " load steps to t = " << s.time() << ", " << iterations
-              << " Newton iterations, " << linear << " linear iterations, "
-              << cutbacks << " cut-backs";
-          if (cutbacks > 0)
-            log << " (which took " << wasted << " more iterations)";
-          log << std::endl;
-        }
+        log_totals(log);
+    }
+
+
+
+    void
+    QuasiStaticSimulation::log_totals(std::ostream &log) const
+    {
+      const auto [iterations, linear, cutbacks, wasted] =
+        iteration_totals(*newton);
+      // (The converged attempts' iterations first: scripts read the number
+      // before "Newton".)
+      log << "Finished: " << newton->steps().size()
+          << " load steps to t = " << newton->time() << ", " << iterations
+          << " Newton iterations, " << linear << " linear iterations, "
+          << cutbacks << " cut-backs";
+      if (cutbacks > 0)
+        log << " (which took " << wasted << " more iterations)";
+      log << std::endl;
     }
 
 

@@ -5,6 +5,7 @@
 
 #include <rubberdyn/base/durable_files.h>
 #include <rubberdyn/base/exceptions.h>
+#include <rubberdyn/contact/mortar_contact_pair.h>
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/model/model.h>
@@ -253,11 +254,12 @@ namespace rubberdyn
 
 
       void
-      add_rigid_surface_contacts(
+      add_rigid_surfaces(
         const Model                                             &model,
         const std::vector<unsigned int>                         &body_of_surface,
         std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
-        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces)
+        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces,
+        std::vector<model::ForceContribution *> &contributions)
       {
         AssertDimension(body_of_surface.size(), model.rigid_surfaces.size());
         // The penalty stiffness s K A^2 / V takes the bulk modulus of the
@@ -282,6 +284,23 @@ namespace rubberdyn
                                         {definition.surface});
             forces.push_back(std::make_unique<contact::RigidSurfaceForces>(
               *contacts.back(), std::vector<unsigned int>{body_of_surface[s]}));
+            contributions.push_back(forces.back().get());
+          }
+      }
+
+
+
+      void
+      add_contact_pairs(
+        const Model                                             &model,
+        std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs,
+        std::vector<model::ForceContribution *> &contributions)
+      {
+        for (const ContactPairDefinition &pair : model.contact_pairs)
+          {
+            pairs.push_back(
+              std::make_unique<contact::MortarContactPair>(model, pair));
+            contributions.push_back(pairs.back().get());
           }
       }
 

@@ -84,8 +84,8 @@ namespace
                    std::vector<double>               &values) override
     {
       (void)values;
-      const model::Model &model = view.model;
-      const VectorType   &u     = view.solver.displacement();
+      const model::Model &model = view.model();
+      const VectorType   &u     = view.displacement();
       FEValues<3>         fe_values(model.fe,
                             QGauss<3>(2),
                             update_gradients | update_JxW_values);
@@ -121,10 +121,10 @@ namespace
       Utilities::MPI::sum(reference, model.comm, reference);
       Utilities::MPI::sum(volume, model.comm, volume);
       Row row;
-      row.time      = view.solver.time();
-      row.total     = view.solver.energies().internal;
+      row.time      = view.time();
+      row.total     = view.internal_energy();
       row.reference = reference;
-      row.solver    = view.solver.internal_energy_by_group();
+      row.solver    = view.internal_energy_by_group();
       rows.push_back(row);
     }
 

@@ -97,7 +97,7 @@ namespace
     void
     after_step(const postprocess::SimulationView &view) override
     {
-      const time_integration::ExplicitSolver &s = view.solver;
+      const time_integration::ExplicitSolver &s = *view.explicit_solver();
       Step                                    step;
       step.time      = s.time();
       step.time_step = s.time_step();

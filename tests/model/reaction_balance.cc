@@ -144,7 +144,7 @@ namespace
     void
     after_step(const postprocess::SimulationView &view) override
     {
-      const time_integration::ExplicitSolver &s = view.solver;
+      const time_integration::ExplicitSolver &s = *view.explicit_solver();
       const VectorType &u = s.displacement(), &v = s.velocity(),
                        &m = s.lumped_mass();
       const double dt_new = s.time_step();
@@ -201,7 +201,7 @@ namespace
       std::vector<double> all;
       for (const std::vector<double> &share : inertia_shares)
         all.insert(all.end(), share.begin(), share.end());
-      Utilities::MPI::sum(all, view.model.comm, all);
+      Utilities::MPI::sum(all, view.model().comm, all);
       for (unsigned int n = 0; n < steps.size(); ++n)
         for (unsigned int d = 0; d < 3; ++d)
           {

@@ -77,8 +77,8 @@ namespace
     void
     after_step(const postprocess::SimulationView &view) override
     {
-      const time_integration::ExplicitSolver &s    = view.solver;
-      const model::RigidBody &                body = view.bodies.back();
+      const time_integration::ExplicitSolver &s    = *view.explicit_solver();
+      const model::RigidBody &                body = view.bodies().back();
       Step                                    step;
       step.time      = s.time();
       step.time_step = s.time_step();
@@ -89,7 +89,7 @@ namespace
       step.energy_error     = s.energies().absolute_error();
       // The block's nodes: x = X + u against the pose.
       double largest = 0.;
-      for (const auto &cell : view.model.dof_handler.active_cell_iterators())
+      for (const auto &cell : view.model().dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() && cell->material_id() == 2)
           for (const unsigned int v : cell->vertex_indices())
             {

@@ -88,11 +88,11 @@ namespace
     void
     after_step(const postprocess::SimulationView &view) override
     {
-      const time_integration::EnergyBalance &e = view.solver.energies();
+      const time_integration::EnergyBalance &e = view.explicit_solver()->energies();
       energies.push_back(e.kinetic + e.internal + e.contact);
       contact_work.push_back(e.contact);
       initial = e.initial;
-      steps   = view.solver.step();
+      steps   = view.explicit_solver()->step();
       // The step after the last one in which the contact's work changed
       // (nodes chatter: the contact energy drops to 0 and back during the
       // impact). After the impact it stays at what the penalty's updates

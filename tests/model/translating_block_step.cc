@@ -56,7 +56,7 @@ namespace
     void
     after_step(const postprocess::SimulationView &view) override
     {
-      steps.push_back(view.solver.time_step());
+      steps.push_back(view.explicit_solver()->time_step());
     }
 
     bool

@@ -40,6 +40,38 @@ namespace rubberdyn
 
 
     /**
+     * The stored energy of the elements, for a scheme without the explicit
+     * run's energy balance (a quasi-static load path): `internal_energy`
+     * (J, summed over the ranks) and per part `<part>_internal_energy` (J):
+     * the columns of the same names of EnergyColumns and PartColumns.
+     */
+    class InternalEnergyColumns : public Postprocessor
+    {
+    public:
+      /** The model's part names, in its order (one element group each). */
+      explicit InternalEnergyColumns(
+        const std::vector<std::string> &part_names);
+
+      std::string
+      name() const override;
+
+      std::vector<std::string>
+      history_columns() const override;
+
+      /**
+       * A part without an element group of its own (a rigid part: only
+       * mass) has 0.
+       */
+      void
+      history_values(const SimulationView &view,
+                     std::vector<double>  &values) override;
+
+    private:
+      std::vector<std::string> part_names;
+    };
+
+
+    /**
      * The reaction of every boundary condition on the body (LS-DYNA's
      * BNDOUT): `<bc>_force_x/_y/_z` (kN) and `<bc>_moment_x/_y/_z` (kN mm
      * about the condition's moment point, with the nodes' current

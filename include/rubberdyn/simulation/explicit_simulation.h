@@ -11,6 +11,7 @@
 #include <rubberdyn/time_integration/explicit_solver.h>
 #include <rubberdyn/time_integration/selective_mass_scaling.h>
 
+#include <chrono>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -38,7 +39,9 @@ namespace rubberdyn
   namespace postprocess
   {
     class TimeHistory;
-  }
+    class HistoryExpressions;
+    class FieldOutputWriter;
+  } // namespace postprocess
 
   namespace model
   {
@@ -186,6 +189,87 @@ namespace rubberdyn
 
     private:
       /**
+       * The elements: one group per part (its law and formulation), cut by
+       * the pretension sections (locked: their shortenings come with the
+       * preload, start_from()); every cross section must cut one.
+       */
+      void
+      build_elements();
+
+      /**
+       * Mass scaling: the density factor of every element, (target step /
+       * stable step)^2 where its stable step is below `Time integration/
+       * Mass scaling time step`, else 1 (collective).
+       *
+       * @throws InputError naming the Mass scaling time step if the largest
+       *   factor is not a usable number.
+       */
+      std::vector<double>
+      mass_scaling_factors() const;
+
+      /**
+       * Refuse, before anything runs (also in `--check`), a Minimum time
+       * step above the first stable step and an End time that would take
+       * more than parameters::TimeIntegration::max_time_steps steps.
+       */
+      void
+      check_number_of_steps() const;
+
+      /** added_mass_by_part from the density factors (all ranks). */
+      void
+      set_added_mass(const std::vector<double> &density_scaling);
+
+      /**
+       * One model::RigidPartMass for the cells of all rigid parts (from
+       * @p mass_of_part), appended to @p contributions; none without rigid
+       * parts.
+       */
+      void
+      add_rigid_part_mass(
+        const std::vector<VectorType>           &mass_of_part,
+        std::vector<model::ForceContribution *> &contributions);
+
+      /**
+       * The bodies: those of the rigid surfaces that have their own, in
+       * their order, then one per rigid part (its free directions and
+       * initial velocity; mass, centre and inertia come in
+       * attach_rigid_parts()); sets body_of_part.
+       */
+      void
+      build_bodies();
+
+      /** The body (in `bodies`) that carries each rigid surface. */
+      std::vector<unsigned int>
+      body_of_surface() const;
+
+      /**
+       * The central-difference solver over @p contributions, the
+       * constraints and the bodies, with the parts' masses for its sums per
+       * part.
+       */
+      void
+      build_solver(
+        const std::vector<model::ForceContribution *> &contributions,
+        const std::vector<VectorType>                 &mass_of_part);
+
+      /**
+       * The parts' initial velocities (a node shared by two parts takes
+       * the velocity of the later one).
+       */
+      void
+      set_initial_velocities();
+
+      /**
+       * The rigid parts' nodes follow their bodies, whose mass, centre and
+       * inertia are set here from the solver's lumped mass.
+       *
+       * @throws InputError naming the boundary condition that holds a node
+       *   of a rigid part (it would fight the body).
+       */
+      void
+      attach_rigid_parts(const std::vector<VectorType> &mass_of_part);
+
+      /**
        * The smallest stable step of the elements in the reference
        * configuration, with the mass scaling's added density, before the
        * scale factor (ms, the same on all ranks; collective). The largest
@@ -205,6 +289,98 @@ namespace rubberdyn
        */
       void
       write_history_plot(const std::vector<std::string> &columns) const;
+
+      /** The clock and the testing aid of a run (run()'s steps). */
+      struct RunProgress
+      {
+        /** When run() started, and when it last wrote a progress line. */
+        std::chrono::steady_clock::time_point wall_start, last_line;
+        /** The time this run starts from (a restart's: its checkpoint's). */
+        double first_time = 0.;
+        /** RunOptions::simulate_crash_at. */
+        double crash_time = 0.;
+      };
+
+      /**
+       * A restart's first step (Output/Restart from checkpoint): read and
+       * check the checkpoint's study.txt (read_checkpoint_header()).
+       * Returns the number of history rows stored with it and the number
+       * of this restart (0, 0 without a restart). Collective.
+       */
+      std::pair<unsigned long, unsigned int>
+      begin_restart();
+
+      /**
+       * Put the ParaView output (postprocess::FieldOutputWriter, with the
+       * contact pairs' pressure, gap and slip) first among the plugins: a
+       * restart writes a series of its own, named after @p restarts.
+       */
+      void
+      add_field_writer(const unsigned int restarts);
+
+      /**
+       * The columns of time_history.csv: time, time_step, the plugins'
+       * and those of Output/History expressions (sets expressions).
+       */
+      std::vector<std::string>
+      history_columns();
+
+      /**
+       * Open time_history.csv: a new one, or for a restart, after reading
+       * every rank's checkpoint state (read_checkpoint_state()), the file
+       * cut to the @p history_rows rows written before the checkpoint.
+       */
+      void
+      open_history(const std::vector<std::string> &columns,
+                   const unsigned long             history_rows,
+                   std::ostream                   &log);
+
+      /**
+       * Write the row of the current state (collective: plugins sum over
+       * the ranks), echoed to @p log with Output/Echo history.
+       */
+      void
+      write_history_row(const postprocess::SimulationView &view,
+                        std::ostream                      &log);
+
+      /**
+       * What the solver calls after every step: the energy-error records,
+       * a history row when due, the plugins' after_step(), a stop asked by
+       * a plugin (throws StopRequested after the last row), the progress
+       * line.
+       */
+      void
+      monitor_step(const postprocess::SimulationView &view,
+                   RunProgress                       &progress,
+                   std::ostream                      &log);
+
+      /**
+       * Run the solver to the End time, in segments that end at the
+       * checkpoint times, writing the checkpoints. Returns whether a
+       * postprocessor stopped the run.
+       *
+       * @throws std::runtime_error if the solver fails, after writing the
+       *   last state.
+       */
+      bool
+      advance_to_end(const postprocess::SimulationView &view,
+                     RunProgress                       &progress,
+                     const unsigned int                 restarts,
+                     std::ostream                      &log);
+
+      /**
+       * The run's own entries of run_summary.json (sizes, steps, wall time
+       * and cost per element-cycle, energy errors, masses, initial
+       * penetrations); the plugins' follow. Collective.
+       */
+      std::vector<postprocess::SummaryEntry>
+      summary_entries(const bool          stopped,
+                      const unsigned long first_step,
+                      const double        wall) const;
+
+      /** The end of the log: "Finished:", the plugins' lines, warnings. */
+      void
+      log_finish(std::ostream &log) const;
 
       /** Write a checkpoint of the current state (collective). */
       void
@@ -259,6 +435,12 @@ namespace rubberdyn
       std::vector<time_integration::PartMassScaling> mass_scaling_parts;
       /** time_history.csv (rows on rank 0). */
       std::unique_ptr<postprocess::TimeHistory> history;
+      /** Output/History expressions, or nullptr (history_columns()). */
+      std::unique_ptr<postprocess::HistoryExpressions> expressions;
+      /** The ParaView output among the postprocessors (run()). */
+      postprocess::FieldOutputWriter *field_writer = nullptr;
+      /** Time of the last history row (ms; -1 before the first). */
+      double last_row_time = -1.;
       /** Next history row and checkpoint times (ms). */
       double next_history = 0., next_checkpoint = 0.;
       /**

@@ -5,6 +5,8 @@
 
 #include <rubberdyn/parameters/output_parameters.h>
 #include <rubberdyn/parameters/time_integration_parameters.h>
+#include <rubberdyn/postprocess/load_path_body_columns.h>
+#include <rubberdyn/postprocess/postprocessor.h>
 #include <rubberdyn/simulation/preload.h>
 #include <rubberdyn/time_integration/quasi_static_solver.h>
 
@@ -29,7 +31,8 @@ namespace rubberdyn
   namespace postprocess
   {
     class HistoryNodes;
-  }
+    class TimeHistory;
+  } // namespace postprocess
   namespace time_integration
   {
     class KinematicConstraints;
@@ -60,13 +63,17 @@ namespace rubberdyn
      * Quasi-static end time`, by Newton-Raphson
      * (time_integration::QuasiStaticSolver). It builds the elements and the
      * kinematic constraints exactly as simulation::ExplicitSimulation does
-     * (model::setup), and writes time_history.csv: time, newton_iterations,
-     * internal_energy, per part `<part>_internal_energy` and per boundary
+     * (simulation::setup), and writes time_history.csv: time,
+     * newton_iterations, then the columns of its postprocessors
+     * (add_postprocessors(): they see the run through a QuasiStaticView):
+     * internal_energy and per part `<part>_internal_energy`, per boundary
      * condition its reaction `<bc>_force_x/_y/_z` (kN) and
-     * `<bc>_moment_x/_y/_z` (kN mm), the `Output/History nodes`'
-     * displacements, the columns and sign conventions of
-     * the explicit run (the force the condition exerts on the body; for a
-     * pressure or traction, the load's resultant). Pressures and tractions
+     * `<bc>_moment_x/_y/_z` (kN mm), the pretension sections, the rigid
+     * surfaces and parts, the contact pairs and the `Output/History
+     * nodes`' displacements: the plugins, columns and sign conventions of
+     * the explicit run where the quantity is the same (the force the
+     * condition exerts on the body; for a pressure or traction, the load's
+     * resultant). Pressures and tractions
      * are the same model::SurfaceLoads contribution as in the explicit run,
      * evaluated at each load step's end time with the pressures' load
      * stiffness in the tangent.
@@ -133,6 +140,37 @@ namespace rubberdyn
     private:
       void
       log_model(std::ostream &log) const;
+
+      /**
+       * The history's plugins, in the order of their columns: the
+       * internal energies, the boundary conditions' reactions and loads,
+       * the pretension sections, the rigid surfaces and parts, the contact
+       * pairs and the history nodes. (End of the constructor: the rigid
+       * parts' columns read the solver's poses.)
+       */
+      void
+      add_postprocessors();
+
+      /**
+       * The columns of time_history.csv: time, newton_iterations and the
+       * plugins'.
+       */
+      std::vector<std::string>
+      history_columns() const;
+
+      /**
+       * Write the row of the last converged state to @p history (echoed to
+       * @p log with Output/Echo history) and set the time of the next row
+       * (collective: the plugins sum over the ranks).
+       */
+      void
+      write_history_row(const postprocess::SimulationView &view,
+                        postprocess::TimeHistory          &history,
+                        std::ostream                      &log);
+
+      /** The "Finished:" line of the log (rank 0). */
+      void
+      log_totals(std::ostream &log) const;
 
       /**
        * On rank 0: run_summary.json (sizes, load steps, Newton, linear and
@@ -214,14 +252,15 @@ namespace rubberdyn
       std::vector<std::unique_ptr<contact::MortarContactPair>>   contact_pairs;
       std::unique_ptr<postprocess::HistoryNodes>              history_nodes;
       std::unique_ptr<time_integration::QuasiStaticSolver>    newton;
+      /** The plugins that write time_history.csv (add_postprocessors()). */
+      std::vector<std::unique_ptr<postprocess::Postprocessor>> postprocessors;
+      /** Pseudo-time of the next history row (write_history_row()). */
+      double next_row = 0.;
       /** Boundary condition and direction of each constraint group. */
       std::vector<unsigned int> condition_of_group, direction_of_group;
-      /** A constraint group holding a rigid part in one direction. */
-      struct HeldPartGroup
-      {
-        unsigned int part, direction, group;
-      };
-      std::vector<HeldPartGroup> held_part_groups;
+      /** The constraint groups holding a rigid part in one direction. */
+      std::vector<postprocess::LoadPathBodyColumns::HeldPartGroup>
+        held_part_groups;
       /**
        * The rigid parts in equilibrium (Quasi-static motion =
        * equilibrium, with a free direction), in the solver's order, and

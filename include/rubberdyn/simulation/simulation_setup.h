@@ -22,12 +22,14 @@ namespace rubberdyn
   {
     class RigidSurfaceContact;
     class RigidSurfaceForces;
+    class MortarContactPair;
   } // namespace contact
 
   namespace model
   {
     class Model;
     class SurfaceLoads;
+    class ForceContribution;
   } // namespace model
 
   namespace simulation
@@ -121,14 +123,28 @@ namespace rubberdyn
        * One contact per rigid surface of the model (its boundary ids,
        * penalty scale and the bulk moduli of the parts that touch it),
        * appended to @p contacts, and its force contribution carried by the
-       * body @p body_of_surface[s], appended to @p forces.
+       * body @p body_of_surface[s] (which body that is, is the scheme's
+       * choice), appended to @p forces and, in the surfaces' order, to
+       * @p contributions.
        */
       void
-      add_rigid_surface_contacts(
+      add_rigid_surfaces(
         const Model                                             &model,
         const std::vector<unsigned int>                         &body_of_surface,
         std::vector<std::unique_ptr<contact::RigidSurfaceContact>> &contacts,
-        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces);
+        std::vector<std::unique_ptr<contact::RigidSurfaceForces>>  &forces,
+        std::vector<model::ForceContribution *> &contributions);
+
+      /**
+       * Mortar contact between the mesh's surfaces: one
+       * contact::MortarContactPair per `Contact pairs` entry of the model,
+       * in its order, appended to @p pairs and to @p contributions.
+       */
+      void
+      add_contact_pairs(
+        const Model                                             &model,
+        std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs,
+        std::vector<model::ForceContribution *> &contributions);
 
       /**
        * The model's initial penetrations (Model::initial_penetrations,
