@@ -20,6 +20,7 @@
 #    zero to 1e-12 of it.
 # 3. A free body in uniform motion (v = (3, -2, 1) mm/ms, 10 times the
 #    step): every history node moves by v t to round-off, no strain energy.
+# 4. A restart continues a scaled run to the bit.
 # The energy balance with the scaling on: within 0.5 % (of the energy
 # through the deformable parts for the cantilever, of the largest energy
 # for the bar, whose rigid motion carries most of it), without drift; the
@@ -170,6 +171,28 @@ awk -F, '
     printf "free body: largest |u - v t| %.3g mm at t up to %.3g ms, largest strain energy %.3g J\n", err, last, strain
     exit !(err <= 1e-12 * 3 * last && strain <= 1e-20)
   }' moving/time_history.csv && echo "ok: rigid translation" || { echo "FAILED: rigid translation"; status=1; }
+
+# 4. A restart: the cantilever's scaled run to 2 ms in one piece and in two
+#    (stopped at 1.2 ms, continued from its checkpoint at 1 ms) write the
+#    same time_history.csv byte for byte (the solve's start, the last
+#    step's accelerations, is in the checkpoint).
+sed -e 's/set End time = 8/set End time = 2/' \
+    -e 's/set Output directory *= cantilever_scaled/set Output directory = whole\n  set Checkpoint interval = 0.5/' \
+    cantilever_scaled.prm > whole.prm
+sed -e 's/= whole/= pieces/' whole.prm > pieces.prm
+sed -e 's/set End time = 2/set End time = 1.2/' pieces.prm > first_piece.prm
+sed -e 's/set Checkpoint interval = 0.5/set Checkpoint interval = 0.5\n  set Restart from checkpoint = true/' pieces.prm > second_piece.prm
+rm -rf whole pieces
+run_prm whole.prm whole.log
+run_prm first_piece.prm first_piece.log
+run_prm second_piece.prm second_piece.log
+grep -q "Restarted from the checkpoint" second_piece.log ||
+  { echo "FAILED: the second piece did not restart"; status=1; }
+if cmp -s whole/time_history.csv pieces/time_history.csv; then
+  echo "ok: a restart continues the scaled run to the bit"
+else
+  echo "FAILED: the restarted run differs"; status=1
+fi
 
 # The energy balance. The error of central differences' energy at t_n
 # (kinetic energy from the mean of the half-step velocities) oscillates
