@@ -257,6 +257,38 @@ namespace rubberdyn
       Implementation(const model::Model                 &model,
                      const model::ContactPairDefinition &definition);
 
+      // The steps of the constructor, in its order.
+
+      /**
+       * The facets of the pair's boundary ids on every rank (facets), in
+       * an order that does not depend on the partition (by their centres):
+       * gathered on this rank, then from all (collective).
+       */
+      void
+      gather_facets(const model::Model &model);
+
+      /**
+       * Number the facets' nodes in the order of the facets; the pair's
+       * partitioner and vectors, and the per-node state.
+       */
+      void
+      set_up_nodes(const model::Model &model);
+
+      /**
+       * The search margin and the passes: slave -> master, and back for
+       * two-pass pairs (one pass for self-contact).
+       */
+      void
+      set_up_passes();
+
+      /**
+       * What @p pass (its slave and master facets set) needs beyond them:
+       * the nodes this rank books, its gap facets, their nodes with the
+       * slave facets around each, and the per-node state.
+       */
+      void
+      set_up_pass(Pass &pass);
+
       /** Positions x = X + u of every surface node. */
       void
       update_positions(const VectorType &u_pair);
