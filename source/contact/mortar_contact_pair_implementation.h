@@ -169,6 +169,24 @@ namespace rubberdyn
           tangential *= Number(limit / tangential.norm());
         return tangential;
       }
+
+      /** The forces of one segment's row a on the patch (the tangent's
+       * MortarContactPair::Implementation::node_forces()): its integrals,
+       * and the segment's weight, the weight's gradient and the column sums
+       * of D and M (mortar_segment_weight(); 1 and zeros where it is 1). */
+      template <typename Number>
+      struct SegmentRow
+      {
+        unsigned int         slave_facet, master_facet;
+        Number               D[4], M[4];
+        Number               weight = 1.;
+        Tensor<1, 3, Number> weight_gradient;
+        bool                 tapered = false;
+        Number               column_D[4], column_M[4];
+        /** The master face's mean slope and the plane's normal
+         * (MortarSegment::slope). */
+        Tensor<1, 3, Number> slope, normal;
+      };
     } // namespace mortar_internal
     using namespace mortar_internal;
 
@@ -520,6 +538,60 @@ namespace rubberdyn
                   std::vector<Tensor<1, 3, Number>>        &force,
                   std::vector<std::array<unsigned int, 3>> &overlaps,
                   const bool                                record) const;
+
+      // The steps of node_forces().
+
+      /**
+       * A tied node's rows (@p rows, of this rank's segments) and its
+       * weighted gap vector @p gap from the reference integrals: node
+       * @p node of @p pass, at the positions @p y of its @p patch.
+       */
+      template <typename Number>
+      void
+      tied_rows(const Pass                          &pass,
+                const unsigned int                   node,
+                const std::vector<unsigned int>     &patch,
+                const std::vector<Point<3, Number>> &y,
+                std::vector<SegmentRow<Number>>     &rows,
+                Tensor<1, 3, Number>                &gap) const;
+
+      /**
+       * A contact node's rows (@p rows, of this rank's segments), covered
+       * area @p A, weighted gap @p gap and weighted slip @p slip: the
+       * segments of the @p overlaps (with @p record, of all candidates,
+       * and @p overlaps becomes those that gave a segment), integrated at
+       * the positions @p y of the @p k-th node's @p patch.
+       */
+      template <typename Number>
+      void
+      contact_rows(const Pass                               &pass,
+                   const unsigned int                        k,
+                   const std::vector<unsigned int>          &patch,
+                   const std::vector<Point<3, Number>>      &y,
+                   std::vector<std::array<unsigned int, 3>> &overlaps,
+                   const bool                                record,
+                   std::vector<SegmentRow<Number>>          &rows,
+                   Number                                   &A,
+                   Tensor<1, 3, Number>                     &gap,
+                   Tensor<1, 3, Number>                     &slip) const;
+
+      /**
+       * The forces of the node's @p traction (pressure @p p, gap @p g,
+       * normal @p n) through its @p rows on its @p patch, at the positions
+       * @p y: w D t on the slave side, -w M t on the master side, and the
+       * spring's share of the weight's forces where it is below 1.
+       */
+      template <typename Number>
+      void
+      add_row_forces(const std::vector<SegmentRow<Number>> &rows,
+                     const bool                             tied,
+                     const Tensor<1, 3, Number>            &traction,
+                     const Number                          &p,
+                     const Number                          &g,
+                     const Tensor<1, 3, Number>            &n,
+                     const std::vector<unsigned int>       &patch,
+                     const std::vector<Point<3, Number>>   &y,
+                     std::vector<Tensor<1, 3, Number>>     &force) const;
 
       /**
        * Add the tangent blocks of @p pass at the current positions: one
