@@ -846,6 +846,52 @@ namespace rubberdyn
        * at this evaluation (J). */
       void
       trace_step(const double error_now);
+
+      // The steps of trace_step().
+
+      /**
+       * A state's work over the step's displacements (x - trace.x), by
+       * node: its @p segments of @p pass, at the positions @p at, with the
+       * nodes' tractions @p t, normals @p normals, gaps @p gaps and
+       * penalties @p penalties; the normal (@p W_normal) and the
+       * tangential part (@p W_tangential) of the segments' tractions, and
+       * the node's share of the weights' forces (@p W_weight).
+       */
+      void
+      trace_state_work(const std::vector<StoredSegment> &segments,
+                       const Pass                       &pass,
+                       const std::vector<Point<3>>      &at,
+                       const std::vector<Tensor<1, 3>>  &t,
+                       const std::vector<Tensor<1, 3>>  &normals,
+                       const std::vector<double>        &gaps,
+                       const std::vector<double>        &penalties,
+                       std::vector<double>              &W_normal,
+                       std::vector<double>              &W_tangential,
+                       std::vector<double>              &W_weight) const;
+
+      /**
+       * The step's shares of each node, from the old state (trace) and
+       * this evaluation's (the springs' energies @p normal_now and
+       * @p tangential_now, gaps @p gap_now, penalties @p penalty_now),
+       * added to trace.shares_since_report; a jump line if the pair's
+       * error (@p error_now) or a node's share moved by more than 0.02 J.
+       */
+      void
+      add_trace_shares(const std::vector<double> &normal_now,
+                       const std::vector<double> &tangential_now,
+                       const std::vector<double> &gap_now,
+                       const std::vector<double> &penalty_now,
+                       const double               error_now);
+
+      /** The report of the shares since the last one: the pair's split and
+       * the largest nodes' (with their gaps @p gap_now). */
+      void
+      report_trace(const std::vector<double> &gap_now,
+                   const double               error_now) const;
+
+      /** The report's lines of node @p a's segments. */
+      void
+      print_trace_segments(const unsigned int a) const;
     };
   } // namespace contact
 } // namespace rubberdyn
