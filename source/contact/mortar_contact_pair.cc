@@ -42,6 +42,22 @@ namespace rubberdyn
       // --trace-pair NAME[:EVERY] (RunOptions; doc/contact.md).
       trace.enabled      = definition.name == run_options().traced_pair;
       trace.report_every = std::max(1u, run_options().trace_every);
+      gather_facets(model);
+      set_up_nodes(model);
+      set_up_passes();
+      // (x is the reference configuration here.)
+      area_now.resize(facets.size());
+      for (unsigned int f = 0; f < facets.size(); ++f)
+        area_now[f] = current_facet_area(f);
+      reference_area = area_now;
+      set_penalty();
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::gather_facets(const model::Model &model)
+    {
       // This rank's facets, then all of them, in an order that does not
       // depend on the partition (by their centres).
       std::vector<GatheredFacet>           own;
@@ -108,7 +124,13 @@ namespace rubberdyn
                     return ka < kb;
                   return a.sides < b.sides;
                 });
+    }
 
+
+
+    void
+    MortarContactPair::Implementation::set_up_nodes(const model::Model &model)
+    {
       // The nodes, numbered in the order of the facets.
       std::map<types::global_dof_index, unsigned int> node_of_dof;
       IndexSet ghosts(model.dof_handler.n_dofs());
@@ -165,7 +187,13 @@ namespace rubberdyn
           x_accepted = node_reference;
         }
       node_stiffness.assign(n_nodes, 0.);
+    }
 
+
+
+    void
+    MortarContactPair::Implementation::set_up_passes()
+    {
       // The passes: slave -> master, and back for two-pass.
       std::vector<unsigned int> side_facets[2];
       double                    diagonal = 0.;
@@ -192,93 +220,93 @@ namespace rubberdyn
       passes.resize(n_passes);
       for (unsigned int p = 0; p < n_passes; ++p)
         {
-          Pass &pass         = passes[p];
-          pass.slave_facets  = side_facets[p];
-          pass.master_facets = side_facets[1 - p];
-
-          // Which rank books a node: the lowest that owns a slave facet
-          // around it; the gap facets: own ones and their neighbours.
-          std::vector<unsigned int> booking_rank(
-            n_nodes,
-            std::numeric_limits<unsigned int>::max());
-          std::vector<bool> near_own(n_nodes, false);
-          for (const unsigned int f : pass.slave_facets)
-            for (const unsigned int node : facet_nodes[f])
-              {
-                booking_rank[node] =
-                  std::min(booking_rank[node], facets[f].rank);
-                if (facets[f].rank == my_rank)
-                  near_own[node] = true;
-              }
-          pass.counted.assign(n_nodes, false);
-          for (unsigned int n = 0; n < n_nodes; ++n)
-            pass.counted[n] = booking_rank[n] == my_rank;
-          for (const unsigned int f : pass.slave_facets)
-            {
-              bool near = false;
-              for (const unsigned int node : facet_nodes[f])
-                near = near || near_own[node];
-              if (near)
-                pass.gap_facets.push_back(f);
-            }
-          // The gap facets' nodes and, for each, its slave facets.
-          std::map<unsigned int, std::vector<unsigned int>> facets_of_node;
-          for (const unsigned int f : pass.gap_facets)
-            for (const unsigned int node : facet_nodes[f])
-              facets_of_node[node];
-          for (const unsigned int f : pass.slave_facets)
-            for (const unsigned int node : facet_nodes[f])
-              {
-                const auto it = facets_of_node.find(node);
-                if (it != facets_of_node.end())
-                  it->second.push_back(f);
-              }
-          pass.facet_start.push_back(0);
-          for (const auto &[node, around] : facets_of_node)
-            {
-              pass.nodes.push_back(node);
-              pass.node_facets.insert(pass.node_facets.end(),
-                                      around.begin(),
-                                      around.end());
-              pass.facet_start.push_back(pass.node_facets.size());
-            }
-          {
-            std::vector<std::vector<unsigned int>> around(pass.nodes.size());
-            for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
-              for (const unsigned int node : facet_nodes[pass.gap_facets[i]])
-                around[std::lower_bound(pass.nodes.begin(),
-                                        pass.nodes.end(),
-                                        node) -
-                       pass.nodes.begin()]
-                  .push_back(i);
-            pass.gap_start.push_back(0);
-            for (const auto &facets_around : around)
-              {
-                pass.node_gap_facets.insert(pass.node_gap_facets.end(),
-                                            facets_around.begin(),
-                                            facets_around.end());
-                pass.gap_start.push_back(pass.node_gap_facets.size());
-              }
-          }
-          pass.candidates.resize(pass.gap_facets.size());
-          if (coulomb)
-            {
-              pass.accepted_tangential.assign(n_nodes, Tensor<1, 3>());
-              pass.trial_tangential.assign(n_nodes, Tensor<1, 3>());
-              pass.accepted_spring_energy.assign(n_nodes, 0.);
-              pass.trial_spring_energy.assign(n_nodes, 0.);
-              pass.accepted_slip_distance.assign(n_nodes, 0.);
-              pass.trial_slip_distance.assign(n_nodes, 0.);
-            }
-          pass.shown_pressure.assign(n_nodes, 0.);
-          pass.shown_gap.assign(n_nodes, 0.);
+          passes[p].slave_facets  = side_facets[p];
+          passes[p].master_facets = side_facets[1 - p];
+          set_up_pass(passes[p]);
         }
-      // (x is the reference configuration here.)
-      area_now.resize(facets.size());
-      for (unsigned int f = 0; f < facets.size(); ++f)
-        area_now[f] = current_facet_area(f);
-      reference_area = area_now;
-      set_penalty();
+    }
+
+
+
+    void
+    MortarContactPair::Implementation::set_up_pass(Pass &pass)
+    {
+      const unsigned int n_nodes = node_dofs.size();
+      // Which rank books a node: the lowest that owns a slave facet
+      // around it; the gap facets: own ones and their neighbours.
+      std::vector<unsigned int> booking_rank(
+        n_nodes,
+        std::numeric_limits<unsigned int>::max());
+      std::vector<bool> near_own(n_nodes, false);
+      for (const unsigned int f : pass.slave_facets)
+        for (const unsigned int node : facet_nodes[f])
+          {
+            booking_rank[node] = std::min(booking_rank[node], facets[f].rank);
+            if (facets[f].rank == my_rank)
+              near_own[node] = true;
+          }
+      pass.counted.assign(n_nodes, false);
+      for (unsigned int n = 0; n < n_nodes; ++n)
+        pass.counted[n] = booking_rank[n] == my_rank;
+      for (const unsigned int f : pass.slave_facets)
+        {
+          bool near = false;
+          for (const unsigned int node : facet_nodes[f])
+            near = near || near_own[node];
+          if (near)
+            pass.gap_facets.push_back(f);
+        }
+      // The gap facets' nodes and, for each, its slave facets.
+      std::map<unsigned int, std::vector<unsigned int>> facets_of_node;
+      for (const unsigned int f : pass.gap_facets)
+        for (const unsigned int node : facet_nodes[f])
+          facets_of_node[node];
+      for (const unsigned int f : pass.slave_facets)
+        for (const unsigned int node : facet_nodes[f])
+          {
+            const auto it = facets_of_node.find(node);
+            if (it != facets_of_node.end())
+              it->second.push_back(f);
+          }
+      pass.facet_start.push_back(0);
+      for (const auto &[node, around] : facets_of_node)
+        {
+          pass.nodes.push_back(node);
+          pass.node_facets.insert(pass.node_facets.end(),
+                                  around.begin(),
+                                  around.end());
+          pass.facet_start.push_back(pass.node_facets.size());
+        }
+      {
+        std::vector<std::vector<unsigned int>> around(pass.nodes.size());
+        for (unsigned int i = 0; i < pass.gap_facets.size(); ++i)
+          for (const unsigned int node : facet_nodes[pass.gap_facets[i]])
+            around[std::lower_bound(pass.nodes.begin(),
+                                    pass.nodes.end(),
+                                    node) -
+                   pass.nodes.begin()]
+              .push_back(i);
+        pass.gap_start.push_back(0);
+        for (const auto &facets_around : around)
+          {
+            pass.node_gap_facets.insert(pass.node_gap_facets.end(),
+                                        facets_around.begin(),
+                                        facets_around.end());
+            pass.gap_start.push_back(pass.node_gap_facets.size());
+          }
+      }
+      pass.candidates.resize(pass.gap_facets.size());
+      if (coulomb)
+        {
+          pass.accepted_tangential.assign(n_nodes, Tensor<1, 3>());
+          pass.trial_tangential.assign(n_nodes, Tensor<1, 3>());
+          pass.accepted_spring_energy.assign(n_nodes, 0.);
+          pass.trial_spring_energy.assign(n_nodes, 0.);
+          pass.accepted_slip_distance.assign(n_nodes, 0.);
+          pass.trial_slip_distance.assign(n_nodes, 0.);
+        }
+      pass.shown_pressure.assign(n_nodes, 0.);
+      pass.shown_gap.assign(n_nodes, 0.);
     }
 
 

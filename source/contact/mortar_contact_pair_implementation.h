@@ -169,6 +169,24 @@ namespace rubberdyn
           tangential *= Number(limit / tangential.norm());
         return tangential;
       }
+
+      /** The forces of one segment's row a on the patch (the tangent's
+       * MortarContactPair::Implementation::node_forces()): its integrals,
+       * and the segment's weight, the weight's gradient and the column sums
+       * of D and M (mortar_segment_weight(); 1 and zeros where it is 1). */
+      template <typename Number>
+      struct SegmentRow
+      {
+        unsigned int         slave_facet, master_facet;
+        Number               D[4], M[4];
+        Number               weight = 1.;
+        Tensor<1, 3, Number> weight_gradient;
+        bool                 tapered = false;
+        Number               column_D[4], column_M[4];
+        /** The master face's mean slope and the plane's normal
+         * (MortarSegment::slope). */
+        Tensor<1, 3, Number> slope, normal;
+      };
     } // namespace mortar_internal
     using namespace mortar_internal;
 
@@ -256,6 +274,38 @@ namespace rubberdyn
 
       Implementation(const model::Model                 &model,
                      const model::ContactPairDefinition &definition);
+
+      // The steps of the constructor, in its order.
+
+      /**
+       * The facets of the pair's boundary ids on every rank (facets), in
+       * an order that does not depend on the partition (by their centres):
+       * gathered on this rank, then from all (collective).
+       */
+      void
+      gather_facets(const model::Model &model);
+
+      /**
+       * Number the facets' nodes in the order of the facets; the pair's
+       * partitioner and vectors, and the per-node state.
+       */
+      void
+      set_up_nodes(const model::Model &model);
+
+      /**
+       * The search margin and the passes: slave -> master, and back for
+       * two-pass pairs (one pass for self-contact).
+       */
+      void
+      set_up_passes();
+
+      /**
+       * What @p pass (its slave and master facets set) needs beyond them:
+       * the nodes this rank books, its gap facets, their nodes with the
+       * slave facets around each, and the per-node state.
+       */
+      void
+      set_up_pass(Pass &pass);
 
       /** Positions x = X + u of every surface node. */
       void
@@ -488,6 +538,60 @@ namespace rubberdyn
                   std::vector<Tensor<1, 3, Number>>        &force,
                   std::vector<std::array<unsigned int, 3>> &overlaps,
                   const bool                                record) const;
+
+      // The steps of node_forces().
+
+      /**
+       * A tied node's rows (@p rows, of this rank's segments) and its
+       * weighted gap vector @p gap from the reference integrals: node
+       * @p node of @p pass, at the positions @p y of its @p patch.
+       */
+      template <typename Number>
+      void
+      tied_rows(const Pass                          &pass,
+                const unsigned int                   node,
+                const std::vector<unsigned int>     &patch,
+                const std::vector<Point<3, Number>> &y,
+                std::vector<SegmentRow<Number>>     &rows,
+                Tensor<1, 3, Number>                &gap) const;
+
+      /**
+       * A contact node's rows (@p rows, of this rank's segments), covered
+       * area @p A, weighted gap @p gap and weighted slip @p slip: the
+       * segments of the @p overlaps (with @p record, of all candidates,
+       * and @p overlaps becomes those that gave a segment), integrated at
+       * the positions @p y of the @p k-th node's @p patch.
+       */
+      template <typename Number>
+      void
+      contact_rows(const Pass                               &pass,
+                   const unsigned int                        k,
+                   const std::vector<unsigned int>          &patch,
+                   const std::vector<Point<3, Number>>      &y,
+                   std::vector<std::array<unsigned int, 3>> &overlaps,
+                   const bool                                record,
+                   std::vector<SegmentRow<Number>>          &rows,
+                   Number                                   &A,
+                   Tensor<1, 3, Number>                     &gap,
+                   Tensor<1, 3, Number>                     &slip) const;
+
+      /**
+       * The forces of the node's @p traction (pressure @p p, gap @p g,
+       * normal @p n) through its @p rows on its @p patch, at the positions
+       * @p y: w D t on the slave side, -w M t on the master side, and the
+       * spring's share of the weight's forces where it is below 1.
+       */
+      template <typename Number>
+      void
+      add_row_forces(const std::vector<SegmentRow<Number>> &rows,
+                     const bool                             tied,
+                     const Tensor<1, 3, Number>            &traction,
+                     const Number                          &p,
+                     const Number                          &g,
+                     const Tensor<1, 3, Number>            &n,
+                     const std::vector<unsigned int>       &patch,
+                     const std::vector<Point<3, Number>>   &y,
+                     std::vector<Tensor<1, 3, Number>>     &force) const;
 
       /**
        * Add the tangent blocks of @p pass at the current positions: one
@@ -742,6 +846,52 @@ namespace rubberdyn
        * at this evaluation (J). */
       void
       trace_step(const double error_now);
+
+      // The steps of trace_step().
+
+      /**
+       * A state's work over the step's displacements (x - trace.x), by
+       * node: its @p segments of @p pass, at the positions @p at, with the
+       * nodes' tractions @p t, normals @p normals, gaps @p gaps and
+       * penalties @p penalties; the normal (@p W_normal) and the
+       * tangential part (@p W_tangential) of the segments' tractions, and
+       * the node's share of the weights' forces (@p W_weight).
+       */
+      void
+      trace_state_work(const std::vector<StoredSegment> &segments,
+                       const Pass                       &pass,
+                       const std::vector<Point<3>>      &at,
+                       const std::vector<Tensor<1, 3>>  &t,
+                       const std::vector<Tensor<1, 3>>  &normals,
+                       const std::vector<double>        &gaps,
+                       const std::vector<double>        &penalties,
+                       std::vector<double>              &W_normal,
+                       std::vector<double>              &W_tangential,
+                       std::vector<double>              &W_weight) const;
+
+      /**
+       * The step's shares of each node, from the old state (trace) and
+       * this evaluation's (the springs' energies @p normal_now and
+       * @p tangential_now, gaps @p gap_now, penalties @p penalty_now),
+       * added to trace.shares_since_report; a jump line if the pair's
+       * error (@p error_now) or a node's share moved by more than 0.02 J.
+       */
+      void
+      add_trace_shares(const std::vector<double> &normal_now,
+                       const std::vector<double> &tangential_now,
+                       const std::vector<double> &gap_now,
+                       const std::vector<double> &penalty_now,
+                       const double               error_now);
+
+      /** The report of the shares since the last one: the pair's split and
+       * the largest nodes' (with their gaps @p gap_now). */
+      void
+      report_trace(const std::vector<double> &gap_now,
+                   const double               error_now) const;
+
+      /** The report's lines of node @p a's segments. */
+      void
+      print_trace_segments(const unsigned int a) const;
     };
   } // namespace contact
 } // namespace rubberdyn

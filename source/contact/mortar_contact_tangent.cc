@@ -28,22 +28,25 @@ namespace rubberdyn
         return result;
       }
 
-      /** The forces of one segment's row a on the patch: its integrals,
-       * and the segment's weight, the weight's gradient and the column sums
-       * of D and M (mortar_segment_weight(); 1 and zeros where it is 1). */
-      template <typename Number>
-      struct SegmentRow
+      /** The index of node @p n in the (sorted) @p patch. */
+      unsigned int
+      patch_index(const std::vector<unsigned int> &patch, const unsigned int n)
       {
-        unsigned int         slave_facet, master_facet;
-        Number               D[4], M[4];
-        Number               weight = 1.;
-        Tensor<1, 3, Number> weight_gradient;
-        bool                 tapered = false;
-        Number               column_D[4], column_M[4];
-        /** The master face's mean slope and the plane's normal
-         * (MortarSegment::slope). */
-        Tensor<1, 3, Number> slope, normal;
-      };
+        return std::lower_bound(patch.begin(), patch.end(), n) - patch.begin();
+      }
+
+      /** Which corner of a facet with the corner nodes @p corners is
+       * @p node. */
+      unsigned int
+      corner_of(const std::array<unsigned int, 4> &corners,
+                const unsigned int                 node)
+      {
+        for (unsigned int a = 0; a < 4; ++a)
+          if (corners[a] == node)
+            return a;
+        Assert(false, ExcInternalError());
+        return 0u;
+      }
     } // namespace
 
 
@@ -97,10 +100,7 @@ namespace rubberdyn
     {
       using Vector            = Tensor<1, 3, Number>;
       const unsigned int node = pass.nodes[k];
-      const auto         at   = [&](const unsigned int n) -> unsigned int {
-        return std::lower_bound(patch.begin(), patch.end(), n) - patch.begin();
-      };
-      const bool tied =
+      const bool         tied =
         definition.type == model::ContactPairDefinition::Type::tied;
       if (tied && !pass.tied[node])
         return false;
@@ -110,125 +110,13 @@ namespace rubberdyn
       std::vector<SegmentRow<Number>> rows;
       Number                          A = 0.;
       Vector                          gap, slip;
-      const auto                      corner_of = [&](const unsigned int f) {
-        for (unsigned int a = 0; a < 4; ++a)
-          if (facet_nodes[f][a] == node)
-            return a;
-        Assert(false, ExcInternalError());
-        return 0u;
-      };
       if (tied)
         {
-          // The reference integrals, fixed: the gap is linear in y.
-          for (const StoredSegment &s : pass.segments)
-            {
-              const unsigned int f = pass.gap_facets[s.slave];
-              if (std::find(facet_nodes[f].begin(),
-                            facet_nodes[f].end(),
-                            node) == facet_nodes[f].end())
-                continue;
-              const unsigned int a  = corner_of(f);
-              const auto        &sn = facet_nodes[f];
-              const auto        &mn = facet_nodes[s.master];
-              SegmentRow<Number> row{};
-              row.slave_facet  = f;
-              row.master_facet = s.master;
-              for (unsigned int b = 0; b < 4; ++b)
-                {
-                  row.D[b] = s.integrals.D[a][b];
-                  row.M[b] = s.integrals.M[a][b];
-                  gap += row.D[b] * minus(y[at(sn[b])], node_reference[sn[b]]) -
-                         row.M[b] * minus(y[at(mn[b])], node_reference[mn[b]]);
-                }
-              if (owns(pass, s.slave))
-                rows.push_back(row);
-            }
+          tied_rows(pass, node, patch, y, rows, gap);
           A = pass.tied_area[node];
         }
       else
-        {
-          // The pairs of a gap facet around the node and a master facet to
-          // integrate: all candidates, or those of @p overlaps (the cut
-          // is decided on doubles only).
-          Assert((!record || std::is_same<Number, double>::value),
-                 ExcInternalError());
-          if (record)
-            {
-              overlaps.clear();
-              for (unsigned int j = pass.gap_start[k];
-                   j < pass.gap_start[k + 1];
-                   ++j)
-                for (const unsigned int m :
-                     pass.candidates[pass.node_gap_facets[j]])
-                  overlaps.push_back({{pass.node_gap_facets[j], m, 0u}});
-            }
-          std::vector<std::array<unsigned int, 3>> kept;
-          FacetCornersOf<Number>  slave_corners, master_corners;
-          MortarSegmentOf<Number> segment;
-          for (const auto &[i, m, tapered] : overlaps)
-            {
-              const unsigned int f  = pass.gap_facets[i];
-              const unsigned int a  = corner_of(f);
-              const auto        &sn = facet_nodes[f];
-              const auto        &mn = facet_nodes[m];
-              for (unsigned int b = 0; b < 4; ++b)
-                {
-                  slave_corners[b]  = y[at(sn[b])];
-                  master_corners[b] = y[at(mn[b])];
-                }
-              // The values: the whole segment, for the same weight as
-              // add_forces(). The derivatives: the node's row only, of the
-              // segments that passed, all rows where the weight is below
-              // 1 (it depends on them).
-              const bool all_rows = record || tapered;
-              if (!integrate_mortar_segment(slave_corners,
-                                            master_corners,
-                                            segment,
-                                            all_rows ? 4 : a))
-                continue;
-              SegmentRow<Number> row{};
-              row.slave_facet  = f;
-              row.master_facet = m;
-              if (all_rows)
-                {
-                  Tensor<1, 3, Number> weighted[4];
-                  row.weight = mortar_segment_weight(slave_corners,
-                                                     master_corners,
-                                                     segment,
-                                                     margin,
-                                                     weighted,
-                                                     row.weight_gradient);
-                  if (record)
-                    {
-                      if (!(value_of(row.weight) > 0.))
-                        continue;
-                      kept.push_back(
-                        {{i, m, value_of(row.weight) < 1. ? 1u : 0u}});
-                    }
-                  row.tapered = value_of(row.weight) < 1.;
-                  column_sums(segment, row.column_D, row.column_M);
-                }
-              row.slope  = segment.slope;
-              row.normal = segment.normal;
-              for (unsigned int b = 0; b < 4; ++b)
-                {
-                  row.D[b] = segment.D[a][b];
-                  row.M[b] = segment.M[a][b];
-                  A += row.weight * row.D[b];
-                  gap += row.weight * (row.D[b] * slave_corners[b] -
-                                       row.M[b] * master_corners[b]);
-                  if (coulomb)
-                    slip +=
-                      row.weight *
-                      (row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
-                       row.M[b] * minus(master_corners[b], x_accepted[mn[b]]));
-                }
-              if (owns(pass, i))
-                rows.push_back(row);
-            }
-          if (record)
-            overlaps = kept;
-        }
+        contact_rows(pass, k, patch, y, overlaps, record, rows, A, gap, slip);
       if (rows.empty() || !(value_of(A) > 0.))
         return false;
 
@@ -241,7 +129,7 @@ namespace rubberdyn
         {
           const auto position =
             [&](const unsigned int node) -> const Point<3, Number> & {
-            return y[at(node)];
+            return y[patch_index(patch, node)];
           };
           n = nodal_normal<Number>(pass, k, position);
           g = -(n * gap) / A;
@@ -276,7 +164,170 @@ namespace rubberdyn
               traction += tangential;
             }
         }
+      add_row_forces(rows, tied, traction, p, g, n, patch, y, force);
+      return true;
+    }
 
+
+
+    template <typename Number>
+    void
+    MortarContactPair::Implementation::tied_rows(
+      const Pass                          &pass,
+      const unsigned int                   node,
+      const std::vector<unsigned int>     &patch,
+      const std::vector<Point<3, Number>> &y,
+      std::vector<SegmentRow<Number>>     &rows,
+      Tensor<1, 3, Number>                &gap) const
+    {
+      const auto at = [&](const unsigned int n) {
+        return patch_index(patch, n);
+      };
+      // The reference integrals, fixed: the gap is linear in y.
+      for (const StoredSegment &s : pass.segments)
+        {
+          const unsigned int f = pass.gap_facets[s.slave];
+          if (std::find(facet_nodes[f].begin(), facet_nodes[f].end(), node) ==
+              facet_nodes[f].end())
+            continue;
+          const unsigned int a  = corner_of(facet_nodes[f], node);
+          const auto        &sn = facet_nodes[f];
+          const auto        &mn = facet_nodes[s.master];
+          SegmentRow<Number> row{};
+          row.slave_facet  = f;
+          row.master_facet = s.master;
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              row.D[b] = s.integrals.D[a][b];
+              row.M[b] = s.integrals.M[a][b];
+              gap += row.D[b] * minus(y[at(sn[b])], node_reference[sn[b]]) -
+                     row.M[b] * minus(y[at(mn[b])], node_reference[mn[b]]);
+            }
+          if (owns(pass, s.slave))
+            rows.push_back(row);
+        }
+    }
+
+
+
+    template <typename Number>
+    void
+    MortarContactPair::Implementation::contact_rows(
+      const Pass                               &pass,
+      const unsigned int                        k,
+      const std::vector<unsigned int>          &patch,
+      const std::vector<Point<3, Number>>      &y,
+      std::vector<std::array<unsigned int, 3>> &overlaps,
+      const bool                                record,
+      std::vector<SegmentRow<Number>>          &rows,
+      Number                                   &A,
+      Tensor<1, 3, Number>                     &gap,
+      Tensor<1, 3, Number>                     &slip) const
+    {
+      const unsigned int node = pass.nodes[k];
+      const auto         at   = [&](const unsigned int n) {
+        return patch_index(patch, n);
+      };
+      // The pairs of a gap facet around the node and a master facet to
+      // integrate: all candidates, or those of @p overlaps (the cut
+      // is decided on doubles only).
+      Assert((!record || std::is_same<Number, double>::value),
+             ExcInternalError());
+      if (record)
+        {
+          overlaps.clear();
+          for (unsigned int j = pass.gap_start[k]; j < pass.gap_start[k + 1];
+               ++j)
+            for (const unsigned int m :
+                 pass.candidates[pass.node_gap_facets[j]])
+              overlaps.push_back({{pass.node_gap_facets[j], m, 0u}});
+        }
+      std::vector<std::array<unsigned int, 3>> kept;
+      FacetCornersOf<Number>                   slave_corners, master_corners;
+      MortarSegmentOf<Number>                  segment;
+      for (const auto &[i, m, tapered] : overlaps)
+        {
+          const unsigned int f  = pass.gap_facets[i];
+          const unsigned int a  = corner_of(facet_nodes[f], node);
+          const auto        &sn = facet_nodes[f];
+          const auto        &mn = facet_nodes[m];
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              slave_corners[b]  = y[at(sn[b])];
+              master_corners[b] = y[at(mn[b])];
+            }
+          // The values: the whole segment, for the same weight as
+          // add_forces(). The derivatives: the node's row only, of the
+          // segments that passed, all rows where the weight is below
+          // 1 (it depends on them).
+          const bool all_rows = record || tapered;
+          if (!integrate_mortar_segment(slave_corners,
+                                        master_corners,
+                                        segment,
+                                        all_rows ? 4 : a))
+            continue;
+          SegmentRow<Number> row{};
+          row.slave_facet  = f;
+          row.master_facet = m;
+          if (all_rows)
+            {
+              Tensor<1, 3, Number> weighted[4];
+              row.weight = mortar_segment_weight(slave_corners,
+                                                 master_corners,
+                                                 segment,
+                                                 margin,
+                                                 weighted,
+                                                 row.weight_gradient);
+              if (record)
+                {
+                  if (!(value_of(row.weight) > 0.))
+                    continue;
+                  kept.push_back({{i, m, value_of(row.weight) < 1. ? 1u : 0u}});
+                }
+              row.tapered = value_of(row.weight) < 1.;
+              column_sums(segment, row.column_D, row.column_M);
+            }
+          row.slope  = segment.slope;
+          row.normal = segment.normal;
+          for (unsigned int b = 0; b < 4; ++b)
+            {
+              row.D[b] = segment.D[a][b];
+              row.M[b] = segment.M[a][b];
+              A += row.weight * row.D[b];
+              gap += row.weight * (row.D[b] * slave_corners[b] -
+                                   row.M[b] * master_corners[b]);
+              if (coulomb)
+                slip +=
+                  row.weight *
+                  (row.D[b] * minus(slave_corners[b], x_accepted[sn[b]]) -
+                   row.M[b] * minus(master_corners[b], x_accepted[mn[b]]));
+            }
+          if (owns(pass, i))
+            rows.push_back(row);
+        }
+      if (record)
+        overlaps = kept;
+    }
+
+
+
+    template <typename Number>
+    void
+    MortarContactPair::Implementation::add_row_forces(
+      const std::vector<SegmentRow<Number>> &rows,
+      const bool                             tied,
+      const Tensor<1, 3, Number>            &traction,
+      const Number                          &p,
+      const Number                          &g,
+      const Tensor<1, 3, Number>            &n,
+      const std::vector<unsigned int>       &patch,
+      const std::vector<Point<3, Number>>   &y,
+      std::vector<Tensor<1, 3, Number>>     &force) const
+    {
+      using Vector  = Tensor<1, 3, Number>;
+      const auto at = [&](const unsigned int node) {
+        return patch_index(patch, node);
+      };
       // w D t on the slave side, -w M t on the master side, t with the
       // segment's normal traction (add_forces()); where the weight is
       // below 1, the node's spring's share of the weight's forces
@@ -312,7 +363,6 @@ namespace rubberdyn
                 Number(minus_dE_dw * row.column_M[b]) * row.weight_gradient;
             }
         }
-      return true;
     }
 
 

@@ -377,6 +377,54 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /**
+       * What the stiffness updates since the accepted state put into a
+       * node's springs against @p surface (J), added to @p energy: the
+       * node at @p x_relative (surface frame; gap @p gap, normal
+       * @p normal) with the new @p stiffness, accepted at
+       * @p last_position with the stiffness @p k_accepted and the
+       * tangential force @p tangential_force.
+       */
+      void
+      add_stiffness_update_energy(const RigidSurface &surface,
+                                  const double        stiffness,
+                                  const double        k_accepted,
+                                  const double        gap,
+                                  const Tensor<1, 3> &normal,
+                                  const Point<3>     &x_relative,
+                                  const Tensor<1, 3> &last_position,
+                                  const Tensor<1, 3> &tangential_force,
+                                  double             &energy)
+      {
+        // The normal spring: what it stores now beyond the
+        // accepted state less the work the node did on it since
+        // (trapezoidal rule, as the energy balance sees the
+        // forces), i.e. what the stiffness updates put in.
+        double       gap_accepted;
+        Tensor<1, 3> normal_accepted;
+        RigidSurfaceContact::gap_and_normal(surface,
+                                            Point<3>(last_position),
+                                            gap_accepted,
+                                            normal_accepted);
+        const double       pressed_now      = std::max(-gap, 0.);
+        const double       pressed_accepted = std::max(-gap_accepted, 0.);
+        const Tensor<1, 3> force_sum =
+          stiffness * pressed_now * normal +
+          k_accepted * pressed_accepted * normal_accepted;
+        energy += 0.5 * stiffness * pressed_now * pressed_now -
+                  0.5 * k_accepted * pressed_accepted * pressed_accepted +
+                  0.5 * force_sum * (x_relative - last_position);
+        // The tangential spring: its accepted force's energy
+        // |f_t|^2 / 2k at the new stiffness.
+        energy += 0.5 * tangential_force.norm_square() *
+                  (1. / stiffness - 1. / k_accepted);
+      }
+    } // namespace
+
+
+
     void
     RigidSurfaceContact::add_forces(
       const VectorType &              u,
@@ -432,32 +480,15 @@ namespace rubberdyn
                   state[3 + d]        = x_relative[d];
                 }
               if (book_update && !std::isnan(last_position[0]))
-                {
-                  // The normal spring: what it stores now beyond the
-                  // accepted state less the work the node did on it since
-                  // (trapezoidal rule, as the energy balance sees the
-                  // forces), i.e. what the stiffness updates put in.
-                  double       gap_accepted;
-                  Tensor<1, 3> normal_accepted;
-                  gap_and_normal(surface,
-                                 Point<3>(last_position),
-                                 gap_accepted,
-                                 normal_accepted);
-                  const double pressed_now = std::max(-gap, 0.);
-                  const double pressed_accepted = std::max(-gap_accepted, 0.);
-                  const Tensor<1, 3> force_sum =
-                    node.stiffness * pressed_now * normal +
-                    k_accepted * pressed_accepted * normal_accepted;
-                  trial_stiffness_energy +=
-                    0.5 * node.stiffness * pressed_now * pressed_now -
-                    0.5 * k_accepted * pressed_accepted * pressed_accepted +
-                    0.5 * force_sum * (x_relative - last_position);
-                  // The tangential spring: its accepted force's energy
-                  // |f_t|^2 / 2k at the new stiffness.
-                  trial_stiffness_energy +=
-                    0.5 * tangential_force.norm_square() *
-                    (1. / node.stiffness - 1. / k_accepted);
-                }
+                add_stiffness_update_energy(surface,
+                                            node.stiffness,
+                                            k_accepted,
+                                            gap,
+                                            normal,
+                                            x_relative,
+                                            last_position,
+                                            tangential_force,
+                                            trial_stiffness_energy);
               if (gap >= 0.)
                 {
                   // Separated: the tangential spring lets go. Dissipated, as

@@ -22,6 +22,137 @@ namespace rubberdyn
 {
   namespace elements
   {
+    namespace
+    {
+      /**
+       * Throw if element group @p group (number @p g) has no law, shares a
+       * material id with an earlier group (@p group_of_id: the groups of
+       * the ids so far, to which its ids are added), is of the mixed u-p
+       * formulation, or has an F-bar stabilisation it cannot use.
+       */
+      void
+      check_group(const ElementGroup                         &group,
+                  const unsigned int                          g,
+                  std::map<types::material_id, unsigned int> &group_of_id)
+      {
+        if (group.law == nullptr)
+          throw std::invalid_argument("SolidHexElements: element group " +
+                                      std::to_string(g) +
+                                      " has no material law");
+        for (const types::material_id id : group.material_ids)
+          {
+            const auto inserted = group_of_id.emplace(id, g);
+            if (!inserted.second)
+              throw std::invalid_argument(
+                "SolidHexElements: material id " + std::to_string(id) +
+                " is in element groups " +
+                std::to_string(inserted.first->second) + " and " +
+                std::to_string(g));
+          }
+        if (group.formulation == Formulation::mixed_up)
+          throw std::invalid_argument(
+            "SolidHexElements: element group " + std::to_string(g) +
+            " is of the mixed u-p formulation (MixedUPElements)");
+        const bool fbar = (group.formulation == Formulation::fbar);
+        if (group.fbar_stabilization != 0. && !fbar)
+          throw std::invalid_argument(
+            "SolidHexElements: element group " + std::to_string(g) +
+            " has an F-bar stabilization but is not of the F-bar "
+            "formulation");
+        if (!(group.fbar_stabilization >= 0. && group.fbar_stabilization <= 1.))
+          throw std::invalid_argument(
+            "SolidHexElements: element group " + std::to_string(g) +
+            " has an F-bar stabilization outside [0, 1]");
+      }
+
+
+
+      /**
+       * Reference-cell shapes at the @p gauss points and the @p centre:
+       * FE_Q(1)'s shape function a is the one of vertex a, as in the
+       * FESystem's base element.
+       */
+      void
+      set_reference_shapes(const Quadrature<3>       &gauss,
+                           const Quadrature<3>       &centre,
+                           internal::ReferenceShapes &reference)
+      {
+        const FE_Q<3> q1(1);
+        for (unsigned int a = 0; a < internal::n_nodes; ++a)
+          {
+            for (unsigned int q = 0; q < internal::n_q; ++q)
+              {
+                reference.values[q][a] = q1.shape_value(a, gauss.point(q));
+                // The force kernel's sum factorisation assumes FE_Q(1)'s
+                // lexicographic shape functions and QGauss's x-fastest point
+                // order (source/elements/hex_lanes.h); check it once here.
+                const Point<3> &xi = gauss.point(q);
+                for (unsigned int d = 0; d < 3; ++d)
+                  AssertThrow(std::abs(xi[d] - (((q >> d) & 1) ?
+                                                  lanes_of::gauss_high :
+                                                  lanes_of::gauss_low)) < 1e-15,
+                              ExcInternalError());
+              }
+            for (unsigned int k = 0; k < 3; ++k)
+              reference.centre[a][k] = q1.shape_grad(a, centre.point(0))[k];
+          }
+      }
+
+
+
+      /**
+       * Lane @p l of @p block: the local dofs of the cell with the global
+       * @p dof_indices, and its geometry from @p fe_values and @p fe_centre
+       * (reinitialised on @p cell).
+       */
+      template <typename CellIterator>
+      void
+      set_lane(const FiniteElement<3>                     &fe,
+               const Utilities::MPI::Partitioner          &partitioner,
+               const std::vector<types::global_dof_index> &dof_indices,
+               const FEValues<3>                          &fe_values,
+               const FEValues<3>                          &fe_centre,
+               const CellIterator                         &cell,
+               const internal::ReferenceShapes            &reference,
+               const unsigned int                          l,
+               internal::HexBlock                         &block)
+      {
+        for (unsigned int i = 0; i < 24; ++i)
+          {
+            const auto ci = fe.system_to_component_index(i);
+            block.dofs[ci.second][ci.first][l] =
+              partitioner.global_to_local(dof_indices[i]);
+          }
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              for (unsigned int q = 0; q < internal::n_q; ++q)
+                block.inverse_jacobian[q][k][c][l] =
+                  fe_values.inverse_jacobian(q)[k][c];
+              block.inverse_jacobian_centre[k][c][l] =
+                fe_centre.inverse_jacobian(0)[k][c];
+            }
+        for (unsigned int q = 0; q < internal::n_q; ++q)
+          block.JxW[q][l] = fe_values.JxW(q);
+        for (unsigned int a = 0; a < internal::n_nodes; ++a)
+          for (unsigned int k = 0; k < 3; ++k)
+            block.X[a][k][l] = cell->vertex(a)[k];
+        // V / int N_a dV, with the integral of add_lumped_mass().
+        double volume = 0.;
+        for (unsigned int q = 0; q < internal::n_q; ++q)
+          volume += block.JxW[q][l];
+        for (unsigned int a = 0; a < internal::n_nodes; ++a)
+          {
+            double integral = 0.;
+            for (unsigned int q = 0; q < internal::n_q; ++q)
+              integral += reference.values[q][a] * block.JxW[q][l];
+            block.inverse_mass_fraction[a][l] = volume / integral;
+          }
+      }
+    } // namespace
+
+
+
     void
     SolidHexElements::initialize(
       const DoFHandler<3, 3> &                                   dof_handler,
@@ -35,35 +166,7 @@ namespace rubberdyn
       for (unsigned int g = 0; g < groups_in.size(); ++g)
         {
           const ElementGroup &group = groups_in[g];
-          if (group.law == nullptr)
-            throw std::invalid_argument("SolidHexElements: element group " +
-                                        std::to_string(g) +
-                                        " has no material law");
-          for (const types::material_id id : group.material_ids)
-            {
-              const auto inserted = group_of_id.emplace(id, g);
-              if (!inserted.second)
-                throw std::invalid_argument(
-                  "SolidHexElements: material id " + std::to_string(id) +
-                  " is in element groups " +
-                  std::to_string(inserted.first->second) + " and " +
-                  std::to_string(g));
-            }
-          if (group.formulation == Formulation::mixed_up)
-            throw std::invalid_argument(
-              "SolidHexElements: element group " + std::to_string(g) +
-              " is of the mixed u-p formulation (MixedUPElements)");
-          const bool fbar = (group.formulation == Formulation::fbar);
-          if (group.fbar_stabilization != 0. && !fbar)
-            throw std::invalid_argument(
-              "SolidHexElements: element group " + std::to_string(g) +
-              " has an F-bar stabilization but is not of the F-bar "
-              "formulation");
-          if (!(group.fbar_stabilization >= 0. &&
-                group.fbar_stabilization <= 1.))
-            throw std::invalid_argument(
-              "SolidHexElements: element group " + std::to_string(g) +
-              " has an F-bar stabilization outside [0, 1]");
+          check_group(group, g, group_of_id);
           const double stabilization = group.fbar_stabilization;
           groups.push_back({group.law,
                             group.formulation,
@@ -80,27 +183,7 @@ namespace rubberdyn
       const QGauss<3>     gauss(2);
       const Quadrature<3> centre(Point<3>(0.5, 0.5, 0.5));
 
-      // Reference-cell shapes: FE_Q(1)'s shape function a is the one of
-      // vertex a, as in the FESystem's base element.
-      const FE_Q<3> q1(1);
-      for (unsigned int a = 0; a < n_nodes; ++a)
-        {
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              reference.values[q][a] = q1.shape_value(a, gauss.point(q));
-              // The force kernel's sum factorisation assumes FE_Q(1)'s
-              // lexicographic shape functions and QGauss's x-fastest point
-              // order (source/elements/hex_lanes.h); check it once here.
-              const Point<3> &xi = gauss.point(q);
-              for (unsigned int d = 0; d < 3; ++d)
-                AssertThrow(std::abs(xi[d] - (((q >> d) & 1) ?
-                                                lanes_of::gauss_high :
-                                                lanes_of::gauss_low)) < 1e-15,
-                            ExcInternalError());
-            }
-          for (unsigned int k = 0; k < 3; ++k)
-            reference.centre[a][k] = q1.shape_grad(a, centre.point(0))[k];
-        }
+      set_reference_shapes(gauss, centre, reference);
 
       MappingQ1<3> mapping;
       FEValues<3>  fe_values(mapping,
@@ -145,37 +228,15 @@ namespace rubberdyn
                 fe_values.reinit(cell);
                 fe_centre.reinit(cell);
                 cell->get_dof_indices(dof_indices);
-                for (unsigned int i = 0; i < 24; ++i)
-                  {
-                    const auto ci = fe.system_to_component_index(i);
-                    block.dofs[ci.second][ci.first][l] =
-                      partitioner->global_to_local(dof_indices[i]);
-                  }
-                for (unsigned int k = 0; k < 3; ++k)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      for (unsigned int q = 0; q < n_q; ++q)
-                        block.inverse_jacobian[q][k][c][l] =
-                          fe_values.inverse_jacobian(q)[k][c];
-                      block.inverse_jacobian_centre[k][c][l] =
-                        fe_centre.inverse_jacobian(0)[k][c];
-                    }
-                for (unsigned int q = 0; q < n_q; ++q)
-                  block.JxW[q][l] = fe_values.JxW(q);
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  for (unsigned int k = 0; k < 3; ++k)
-                    block.X[a][k][l] = cell->vertex(a)[k];
-                // V / int N_a dV, with the integral of add_lumped_mass().
-                double volume = 0.;
-                for (unsigned int q = 0; q < n_q; ++q)
-                  volume += block.JxW[q][l];
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  {
-                    double integral = 0.;
-                    for (unsigned int q = 0; q < n_q; ++q)
-                      integral += reference.values[q][a] * block.JxW[q][l];
-                    block.inverse_mass_fraction[a][l] = volume / integral;
-                  }
+                set_lane(fe,
+                         *partitioner,
+                         dof_indices,
+                         fe_values,
+                         fe_centre,
+                         cell,
+                         reference,
+                         l,
+                         block);
                 if (l < block.n_active)
                   {
                     block.element[l] = elements.size();

@@ -59,6 +59,36 @@ namespace rubberdyn
           result += c[4 * q + a] * x[a];
         return result;
       }
+
+      /**
+       * The cell's vertices of face @p face in the order of the face's
+       * (xi, eta) such that xi x eta points out of the cell: the xi x eta
+       * normal at the face's centre against the direction from the cell's
+       * centre to the face's centre; xi and eta swapped if it points
+       * inwards (a mesh's faces need not all be oriented alike).
+       */
+      template <typename CellIterator>
+      std::array<unsigned int, 4>
+      outward_face_vertices(const CellIterator &cell, const unsigned int face)
+      {
+        std::array<unsigned int, 4> vertex;
+        for (unsigned int v = 0; v < 4; ++v)
+          vertex[v] = GeometryInfo<3>::face_to_cell_vertices(face, v);
+        Point<3> face_centre, cell_centre;
+        for (unsigned int v = 0; v < 4; ++v)
+          face_centre += 0.25 * cell->vertex(vertex[v]);
+        for (const unsigned int v : cell->vertex_indices())
+          cell_centre += 0.125 * cell->vertex(v);
+        const Tensor<1, 3> d_xi =
+          0.5 * (cell->vertex(vertex[1]) - cell->vertex(vertex[0]) +
+                 cell->vertex(vertex[3]) - cell->vertex(vertex[2]));
+        const Tensor<1, 3> d_eta =
+          0.5 * (cell->vertex(vertex[2]) - cell->vertex(vertex[0]) +
+                 cell->vertex(vertex[3]) - cell->vertex(vertex[1]));
+        if (cross_product_3d(d_xi, d_eta) * (face_centre - cell_centre) < 0.)
+          std::swap(vertex[1], vertex[2]);
+        return vertex;
+      }
     } // namespace
 
 
@@ -83,153 +113,149 @@ namespace rubberdyn
               shape_d_eta[4 * q + a] = shape_d_eta_of(a, xi);
             }
         }
-
-      const FiniteElement<3>              &fe = dof_handler.get_fe();
-      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const BoundaryCondition &bc : conditions)
+        loads.push_back(make_load(dof_handler, bc));
+    }
+
+
+
+    SurfaceLoads::Load
+    SurfaceLoads::make_load(const DoFHandler<3, 3>  &dof_handler,
+                            const BoundaryCondition &bc) const
+    {
+      const std::string path = "Boundary conditions/" + bc.name;
+      Load              load;
+      load.name                = bc.name;
+      load.type                = bc.type;
+      load.components          = bc.components;
+      load.functions           = bc.functions;
+      load.depends_on_position = bc.depends_on_position;
+      load.moment_point        = bc.moment_point;
+      if (bc.type == BoundaryCondition::Type::pressure)
         {
-          const std::string path = "Boundary conditions/" + bc.name;
-          Load              load;
-          load.name                = bc.name;
-          load.type                = bc.type;
-          load.components          = bc.components;
-          load.functions           = bc.functions;
-          load.depends_on_position = bc.depends_on_position;
-          load.moment_point        = bc.moment_point;
-          if (bc.type == BoundaryCondition::Type::pressure)
-            {
-              if (bc.functions.size() != 1)
-                throw InputError(path + "/Function expression",
-                                 "a pressure takes one scalar function");
-            }
-          else if (bc.type == BoundaryCondition::Type::traction)
-            {
-              if (bc.functions.size() != bc.components.size())
-                throw InputError(path + "/Function expression",
-                                 "a traction takes one function per listed "
-                                 "component");
-              for (const unsigned int d : bc.components)
-                AssertThrow(d < 3, ExcIndexRange(d, 0, 3));
-            }
-          else
-            throw InputError(path + "/Type",
-                             "is not a load (pressure or traction)");
-
-          // The loaded faces of the locally owned cells; every node once.
-          std::map<types::global_dof_index, unsigned int> node_of_dof;
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned())
-              for (const unsigned int face : cell->face_indices())
-                if (cell->at_boundary(face) &&
-                    bc.boundary_ids.count(cell->face(face)->boundary_id()) > 0)
-                  {
-                    cell->get_dof_indices(dof_indices);
-                    std::array<unsigned int, 4> vertex;
-                    for (unsigned int v = 0; v < 4; ++v)
-                      vertex[v] =
-                        GeometryInfo<3>::face_to_cell_vertices(face, v);
-                    // Outward normal: the xi x eta normal at the face's
-                    // centre against the direction from the cell's centre
-                    // to the face's centre; swap xi and eta if it points
-                    // inwards.
-                    {
-                      Point<3> face_centre, cell_centre;
-                      for (unsigned int v = 0; v < 4; ++v)
-                        face_centre += 0.25 * cell->vertex(vertex[v]);
-                      for (const unsigned int v : cell->vertex_indices())
-                        cell_centre += 0.125 * cell->vertex(v);
-                      const Tensor<1, 3> d_xi =
-                        0.5 *
-                        (cell->vertex(vertex[1]) - cell->vertex(vertex[0]) +
-                         cell->vertex(vertex[3]) - cell->vertex(vertex[2]));
-                      const Tensor<1, 3> d_eta =
-                        0.5 *
-                        (cell->vertex(vertex[2]) - cell->vertex(vertex[0]) +
-                         cell->vertex(vertex[3]) - cell->vertex(vertex[1]));
-                      if (cross_product_3d(d_xi, d_eta) *
-                            (face_centre - cell_centre) <
-                          0.)
-                        std::swap(vertex[1], vertex[2]);
-                    }
-                    std::array<unsigned int, 4> nodes;
-                    std::array<Tensor<1, 3>, 4> X;
-                    for (unsigned int v = 0; v < 4; ++v)
-                      {
-                        const types::global_dof_index first =
-                          dof_indices[fe.component_to_system_index(0,
-                                                                   vertex[v])];
-                        const auto existing = node_of_dof.find(first);
-                        if (existing != node_of_dof.end())
-                          nodes[v] = existing->second;
-                        else
-                          {
-                            nodes[v]           = load.node_dofs.size();
-                            node_of_dof[first] = nodes[v];
-                            std::array<unsigned int, 3> dofs;
-                            for (unsigned int d = 0; d < 3; ++d)
-                              dofs[d] = partitioner->global_to_local(
-                                dof_indices
-                                  [fe.component_to_system_index(d, vertex[v])]);
-                            load.node_dofs.push_back(dofs);
-                            load.node_position.push_back(
-                              cell->vertex(vertex[v]));
-                          }
-                        X[v] = cell->vertex(vertex[v]);
-                      }
-                    load.face_nodes.push_back(nodes);
-                    std::array<Point<3>, 4> points;
-                    std::array<double, 16>  weights;
-                    for (unsigned int q = 0; q < 4; ++q)
-                      {
-                        points[q] = Point<3>(combine(shape_weight, q, X) /
-                                             quadrature.weight(q));
-                        const double area =
-                          cross_product_3d(combine(shape_d_xi, q, X),
-                                           combine(shape_d_eta, q, X))
-                            .norm();
-                        for (unsigned int a = 0; a < 4; ++a)
-                          weights[4 * q + a] = shape_weight[4 * q + a] * area;
-                      }
-                    load.quadrature_points.push_back(points);
-                    load.face_weights.push_back(weights);
-                  }
-
-          const unsigned int n_nodes = load.node_dofs.size();
-          load.node_area.assign(n_nodes, 0.);
-          for (unsigned int f = 0; f < load.face_nodes.size(); ++f)
-            for (unsigned int q = 0; q < 4; ++q)
-              for (unsigned int a = 0; a < 4; ++a)
-                load.node_area[load.face_nodes[f][a]] +=
-                  load.face_weights[f][4 * q + a];
-          // Keep what the evaluation needs: the weights of a traction (per
-          // node if uniform, per face and point if not), the points of a
-          // position-dependent load.
-          if (load.type == BoundaryCondition::Type::pressure)
-            load.node_area.clear();
-          if (load.type == BoundaryCondition::Type::pressure ||
-              !load.depends_on_position)
-            load.face_weights.clear();
-          if (!load.depends_on_position)
-            load.quadrature_points.clear();
-          load.force.assign(3 * n_nodes, 0.);
-          load.displacement.assign(3 * n_nodes, 0.);
-          load.previous_force.assign(3 * n_nodes, 0.);
-          load.previous_displacement.assign(3 * n_nodes, 0.);
-
-          const unsigned int n_faces =
-            Utilities::MPI::sum(static_cast<unsigned int>(
-                                  load.face_nodes.size()),
-                                partitioner->get_mpi_communicator());
-          if (n_faces == 0)
-            {
-              std::string ids;
-              for (const types::boundary_id id : bc.boundary_ids)
-                ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-              throw InputError(path + "/Boundary ids",
-                               "no boundary face has the boundary id " + ids);
-            }
-          loads.push_back(std::move(load));
+          if (bc.functions.size() != 1)
+            throw InputError(path + "/Function expression",
+                             "a pressure takes one scalar function");
         }
+      else if (bc.type == BoundaryCondition::Type::traction)
+        {
+          if (bc.functions.size() != bc.components.size())
+            throw InputError(path + "/Function expression",
+                             "a traction takes one function per listed "
+                             "component");
+          for (const unsigned int d : bc.components)
+            AssertThrow(d < 3, ExcIndexRange(d, 0, 3));
+        }
+      else
+        throw InputError(path + "/Type",
+                         "is not a load (pressure or traction)");
+
+      add_faces(dof_handler, bc, load);
+      prepare_for_evaluation(load);
+
+      const unsigned int n_faces =
+        Utilities::MPI::sum(static_cast<unsigned int>(load.face_nodes.size()),
+                            partitioner->get_mpi_communicator());
+      if (n_faces == 0)
+        {
+          std::string ids;
+          for (const types::boundary_id id : bc.boundary_ids)
+            ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+          throw InputError(path + "/Boundary ids",
+                           "no boundary face has the boundary id " + ids);
+        }
+      return load;
+    }
+
+
+
+    void
+    SurfaceLoads::add_faces(const DoFHandler<3, 3>  &dof_handler,
+                            const BoundaryCondition &bc,
+                            Load                    &load) const
+    {
+      const Quadrature<2>                 &quadrature = face_quadrature();
+      const FiniteElement<3>              &fe         = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      // The loaded faces of the locally owned cells; every node once.
+      std::map<types::global_dof_index, unsigned int> node_of_dof;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int face : cell->face_indices())
+            if (cell->at_boundary(face) &&
+                bc.boundary_ids.count(cell->face(face)->boundary_id()) > 0)
+              {
+                cell->get_dof_indices(dof_indices);
+                const std::array<unsigned int, 4> vertex =
+                  outward_face_vertices(cell, face);
+                std::array<unsigned int, 4> nodes;
+                std::array<Tensor<1, 3>, 4> X;
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    const types::global_dof_index first =
+                      dof_indices[fe.component_to_system_index(0, vertex[v])];
+                    const auto existing = node_of_dof.find(first);
+                    if (existing != node_of_dof.end())
+                      nodes[v] = existing->second;
+                    else
+                      {
+                        nodes[v]           = load.node_dofs.size();
+                        node_of_dof[first] = nodes[v];
+                        std::array<unsigned int, 3> dofs;
+                        for (unsigned int d = 0; d < 3; ++d)
+                          dofs[d] = partitioner->global_to_local(
+                            dof_indices
+                              [fe.component_to_system_index(d, vertex[v])]);
+                        load.node_dofs.push_back(dofs);
+                        load.node_position.push_back(cell->vertex(vertex[v]));
+                      }
+                    X[v] = cell->vertex(vertex[v]);
+                  }
+                load.face_nodes.push_back(nodes);
+                std::array<Point<3>, 4> points;
+                std::array<double, 16>  weights;
+                for (unsigned int q = 0; q < 4; ++q)
+                  {
+                    points[q] = Point<3>(combine(shape_weight, q, X) /
+                                         quadrature.weight(q));
+                    const double area =
+                      cross_product_3d(combine(shape_d_xi, q, X),
+                                       combine(shape_d_eta, q, X))
+                        .norm();
+                    for (unsigned int a = 0; a < 4; ++a)
+                      weights[4 * q + a] = shape_weight[4 * q + a] * area;
+                  }
+                load.quadrature_points.push_back(points);
+                load.face_weights.push_back(weights);
+              }
+    }
+
+
+
+    void
+    SurfaceLoads::prepare_for_evaluation(Load &load)
+    {
+      const unsigned int n_nodes = load.node_dofs.size();
+      load.node_area.assign(n_nodes, 0.);
+      for (unsigned int f = 0; f < load.face_nodes.size(); ++f)
+        for (unsigned int q = 0; q < 4; ++q)
+          for (unsigned int a = 0; a < 4; ++a)
+            load.node_area[load.face_nodes[f][a]] +=
+              load.face_weights[f][4 * q + a];
+      // Keep what the evaluation needs: the weights of a traction (per
+      // node if uniform, per face and point if not), the points of a
+      // position-dependent load.
+      if (load.type == BoundaryCondition::Type::pressure)
+        load.node_area.clear();
+      if (load.type == BoundaryCondition::Type::pressure ||
+          !load.depends_on_position)
+        load.face_weights.clear();
+      if (!load.depends_on_position)
+        load.quadrature_points.clear();
+      load.force.assign(3 * n_nodes, 0.);
+      load.displacement.assign(3 * n_nodes, 0.);
+      load.previous_force.assign(3 * n_nodes, 0.);
+      load.previous_displacement.assign(3 * n_nodes, 0.);
     }
 
 

@@ -209,6 +209,66 @@ namespace rubberdyn
                const VectorType                    &increment,
                const bool                           predictor);
 
+      // The steps of assemble(), in its order.
+
+      /**
+       * Let the loads update their couplings at @p point, and rebuild the
+       * pattern if any changed them.
+       */
+      void
+      update_pattern(const model::EvaluationPoint &point);
+
+      /**
+       * The constraints of one assembly on the coupled dofs: the
+       * prescribed increments @p increment if @p predictor, else
+       * homogeneous.
+       */
+      void
+      make_step_constraints(const VectorType          &increment,
+                            const bool                 predictor,
+                            AffineConstraints<double> &step_constraints);
+
+      /** The elements' tangents at @p u into the matrix (and the parts'
+       * borders). */
+      void
+      assemble_element_tangents(
+        const VectorType                &u,
+        const AffineConstraints<double> &step_constraints,
+        const bool                       predictor);
+
+      /** The loads' tangents at @p point into the matrix (and the parts'
+       * borders). */
+      void
+      assemble_load_tangents(const model::EvaluationPoint    &point,
+                             const AffineConstraints<double> &step_constraints,
+                             const bool                       predictor);
+
+      /**
+       * One load's tangent block @p K on @p dofs into the rigid parts'
+       * borders (@p block_local: scratch for its local indices).
+       */
+      void
+      add_load_block_to_parts(const model::ForceContribution             &load,
+                              const std::vector<types::global_dof_index> &dofs,
+                              const std::vector<double>                  &K,
+                              std::vector<unsigned int> &block_local);
+
+      /** -r of @p r on the free owned dofs; compress matrix and rhs. */
+      void
+      assemble_residual(const Residual &r);
+
+      /** A diagonal for the constrained rows no element touches. */
+      void
+      fill_empty_rows();
+
+      /** The sections' columns, rows, diagonals and right-hand sides. */
+      void
+      assemble_section_couplings(const VectorType &u, const Residual &r);
+
+      /** The bordered block and the rigid parts' right-hand side. */
+      void
+      assemble_border(const Residual &r);
+
       /**
        * What the Residual tolerance multiplies (kN): the larger of the
        * norms of the reactions and of the loads of @p r, at least the
@@ -260,6 +320,53 @@ namespace rubberdyn
             const VectorType                    &increment,
             const std::vector<double>           &delta_increment,
             const bool                           predictor);
+
+      // The steps of solve().
+
+      /**
+       * Factorise the matrix (direct solver: returned, with
+       * @p direct_control as its control) or build the AMG preconditioner
+       * (amg; null returned).
+       */
+      std::unique_ptr<TrilinosWrappers::SolverDirect>
+      factorise(SolverControl &direct_control);
+
+      /**
+       * x = K^{-1} b with the factorisation @p direct or, without one, CG
+       * or GMRES with amg; the linear iterations (0 for the direct solver).
+       */
+      unsigned int
+      linear_solve(TrilinosWrappers::SolverDirect      *direct,
+                   TrilinosWrappers::MPI::Vector       &x,
+                   const TrilinosWrappers::MPI::Vector &b);
+
+      /**
+       * @throws QuasiStaticFailure if a rigid part's free direction has no
+       *   stiffness.
+       */
+      void
+      check_part_stiffness() const;
+
+      /** k_k = K g_k and k^_k = K^T g_k of bordered unknown @p k (the
+       * sections, then the parts' directions). */
+      const VectorType &
+      bordered_column(const unsigned int k) const;
+      const VectorType &
+      bordered_row(const unsigned int k) const;
+
+      /**
+       * The bordered unknowns' increments: the prescribed sections'
+       * (@p delta_increment if @p predictor, else zero), and the others
+       * from the Schur complement of the bordered system, given the
+       * correction @p a without them and b_k = K^{-1} k_k.
+       *
+       * @throws QuasiStaticFailure if that complement is singular.
+       */
+      std::vector<double>
+      bordered_increments(const VectorType              &a,
+                          const std::vector<VectorType> &b,
+                          const std::vector<double>     &delta_increment,
+                          const bool                     predictor) const;
 
       /**
        * |du . rhs| over the free dofs, the force-controlled sections and
@@ -801,20 +908,9 @@ namespace rubberdyn
       const VectorType                    &increment,
       const bool                           predictor)
     {
-      // A contact search found new candidates, or a contact closed that
-      // was open at every assembly before: a new pattern first.
       place_bodies(body_time);
       const model::EvaluationPoint point{u, zero, zero, bodies, t};
-      for (model::ForceContribution *load : loads)
-        load->update_couplings(point);
-      {
-        bool changed = false;
-        for (unsigned int l = 0; l < loads.size(); ++l)
-          changed =
-            changed || loads[l]->couplings_version() != pattern_versions[l];
-        if (Utilities::MPI::logical_or(changed, comm))
-          build_pattern();
-      }
+      update_pattern(point);
       matrix = 0.;
       rhs    = 0.;
       // The rigid parts' borders, block by block below (before the
@@ -829,6 +925,44 @@ namespace rubberdyn
               part_row[j]    = 0.;
             }
         }
+      AffineConstraints<double> step_constraints(coupled_rows);
+      make_step_constraints(increment, predictor, step_constraints);
+
+      assemble_element_tangents(u, step_constraints, predictor);
+      assemble_load_tangents(point, step_constraints, predictor);
+      assemble_residual(r);
+      fill_empty_rows();
+
+      assemble_section_couplings(u, r);
+      assemble_border(r);
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::update_pattern(
+      const model::EvaluationPoint &point)
+    {
+      // A contact search found new candidates, or a contact closed that
+      // was open at every assembly before: a new pattern first.
+      for (model::ForceContribution *load : loads)
+        load->update_couplings(point);
+      bool changed = false;
+      for (unsigned int l = 0; l < loads.size(); ++l)
+        changed =
+          changed || loads[l]->couplings_version() != pattern_versions[l];
+      if (Utilities::MPI::logical_or(changed, comm))
+        build_pattern();
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::make_step_constraints(
+      const VectorType          &increment,
+      const bool                 predictor,
+      AffineConstraints<double> &step_constraints)
+    {
       // The constraints of this assembly: the prescribed increments as
       // inhomogeneities in the predictor, none after.
       // (On every dof the loads' couplings reach: the increments from
@@ -838,7 +972,6 @@ namespace rubberdyn
           coupled_increment.copy_locally_owned_data_from(increment);
           coupled_increment.update_ghost_values();
         }
-      AffineConstraints<double> step_constraints(coupled_rows);
       for (unsigned int i = 0; i < coupled_constrained.size(); ++i)
         if (coupled_constrained[i])
           {
@@ -850,7 +983,16 @@ namespace rubberdyn
                 global, coupled_increment.local_element(i));
           }
       step_constraints.close();
+    }
 
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble_element_tangents(
+      const VectorType                &u,
+      const AffineConstraints<double> &step_constraints,
+      const bool                       predictor)
+    {
       const unsigned int                   n = elements.n_dofs_per_element();
       FullMatrix<double>                   cell_matrix(n, n);
       Vector<double>                       cell_rhs(n);
@@ -873,11 +1015,21 @@ namespace rubberdyn
                                                       rhs,
                                                       predictor);
         });
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble_load_tangents(
+      const model::EvaluationPoint    &point,
+      const AffineConstraints<double> &step_constraints,
+      const bool                       predictor)
+    {
       // The loads' tangents (the pressures' load stiffness, contact),
       // block by block.
-      FullMatrix<double>                   block_matrix;
-      Vector<double>                       block_rhs;
-      std::vector<unsigned int>            block_local;
+      FullMatrix<double>        block_matrix;
+      Vector<double>            block_rhs;
+      std::vector<unsigned int> block_local;
       for (const model::ForceContribution *load : loads)
         load->add_tangents(
           point,
@@ -890,38 +1042,7 @@ namespace rubberdyn
               for (unsigned int j = 0; j < n; ++j)
                 block_matrix(i, j) = K[n * i + j];
             if (parts)
-              {
-                // The parts' borders need the block on this rank's
-                // vectors: a block that reaches beyond them may not
-                // touch a part.
-                bool beyond = false, touches_part = false;
-                block_local.resize(n);
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    AssertThrow(coupled_rows.is_element(dofs[i]),
-                                ExcMessage("The tangent of '" + load->name() +
-                                           "' reaches a dof it did not "
-                                           "announce in add_couplings()"));
-                    touches_part =
-                      touches_part ||
-                      coupled_part_node[coupled_partitioner->global_to_local(
-                        dofs[i])];
-                    if (relevant.is_element(dofs[i]))
-                      block_local[i] = partitioner->global_to_local(dofs[i]);
-                    else
-                      beyond = true;
-                  }
-                AssertThrow(!(beyond && touches_part),
-                            ExcMessage(
-                              "The tangent of '" + load->name() +
-                              "' couples a rigid part's node with a node "
-                              "of a third rank: the quasi-static solver's "
-                              "rigid parts cannot border that block yet "
-                              "(run on one rank)"));
-                if (!beyond)
-                  parts->add_block(
-                    block_local.data(), n, K.data(), part_column, part_row);
-              }
+              add_load_block_to_parts(*load, dofs, K, block_local);
             step_constraints.distribute_local_to_global(block_matrix,
                                                         block_rhs,
                                                         dofs,
@@ -929,6 +1050,55 @@ namespace rubberdyn
                                                         rhs,
                                                         predictor);
           });
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::add_load_block_to_parts(
+      const model::ForceContribution             &load,
+      const std::vector<types::global_dof_index> &dofs,
+      const std::vector<double>                  &K,
+      std::vector<unsigned int>                  &block_local)
+    {
+      // The parts' borders need the block on this rank's vectors: a block
+      // that reaches beyond them may not touch a part.
+      const unsigned int n      = dofs.size();
+      bool               beyond = false, touches_part = false;
+      block_local.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          AssertThrow(coupled_rows.is_element(dofs[i]),
+                      ExcMessage("The tangent of '" + load.name() +
+                                 "' reaches a dof it did not "
+                                 "announce in add_couplings()"));
+          touches_part =
+            touches_part ||
+            coupled_part_node[coupled_partitioner->global_to_local(dofs[i])];
+          if (relevant.is_element(dofs[i]))
+            block_local[i] = partitioner->global_to_local(dofs[i]);
+          else
+            beyond = true;
+        }
+      AssertThrow(!(beyond && touches_part),
+                  ExcMessage("The tangent of '" + load.name() +
+                             "' couples a rigid part's node with a node "
+                             "of a third rank: the quasi-static solver's "
+                             "rigid parts cannot border that block yet "
+                             "(run on one rank)"));
+      if (!beyond)
+        parts->add_block(block_local.data(),
+                         n,
+                         K.data(),
+                         part_column,
+                         part_row);
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble_residual(const Residual &r)
+    {
       // -r on the free owned dofs (the residual is already summed). The
       // constrained rows keep what distribute_local_to_global() put there
       // (their solution is overwritten in solve(), and their columns are
@@ -944,71 +1114,90 @@ namespace rubberdyn
       rhs.add(indices, values);
       matrix.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::fill_empty_rows()
+    {
       // A constrained dof that no element touches (a held rigid part's
       // nodes: its cells have no elements) has an empty row; give it a
       // diagonal of the matrix's mean scale (its solution is overwritten).
       // (Models without such rows skip the scale and the second compress.)
-      {
-        const unsigned int                   n_owned = partitioner->locally_owned_size();
-        std::vector<types::global_dof_index> empty_rows;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (constrained[i] &&
-              matrix.diag_element(partitioner->local_to_global(i)) == 0.)
-            empty_rows.push_back(partitioner->local_to_global(i));
-        if (Utilities::MPI::logical_or(!empty_rows.empty(), comm))
-          {
-            double sum = 0., count = 0.;
-            for (unsigned int i = 0; i < n_owned; ++i)
-              if (!constrained[i])
-                {
-                  sum += std::abs(
-                    matrix.diag_element(partitioner->local_to_global(i)));
-                  count += 1.;
-                }
-            sum   = Utilities::MPI::sum(sum, comm);
-            count = Utilities::MPI::sum(count, comm);
-            const double scale = count > 0. && sum > 0. ? sum / count : 1.;
-            for (const types::global_dof_index row : empty_rows)
-              matrix.set(row, row, scale);
-            // (Collective: every rank, whether it set anything.)
-            matrix.compress(VectorOperation::insert);
-          }
-      }
-
-      // The sections' border: k_s = K g_s, k^_s = K^T g_s, kappa_s.
-      if (!sections.empty())
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      std::vector<types::global_dof_index> empty_rows;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        if (constrained[i] &&
+            matrix.diag_element(partitioner->local_to_global(i)) == 0.)
+          empty_rows.push_back(partitioner->local_to_global(i));
+      if (Utilities::MPI::logical_or(!empty_rows.empty(), comm))
         {
-          for (unsigned int s = 0; s < sections.size(); ++s)
-            {
-              section_column[s] = 0.;
-              section_row[s]    = 0.;
-              section_diagonal[s] = 0.;
-              section_rhs[s]      = -r.section_residual[s];
-            }
-          elements.compute_section_couplings(
-            u,
-            [&](const unsigned int *dofs,
-                const unsigned int  s,
-                const double       *K_g,
-                const double       *KT_g,
-                const double        gKg) {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  section_column[s].local_element(dofs[i]) += K_g[i];
-                  section_row[s].local_element(dofs[i]) += KT_g[i];
-                }
-              section_diagonal[s] += gKg;
-            });
-          for (unsigned int s = 0; s < sections.size(); ++s)
-            {
-              section_column[s].compress(VectorOperation::add);
-              section_row[s].compress(VectorOperation::add);
-            }
-          Utilities::MPI::sum(ArrayView<const double>(section_diagonal),
-                              comm,
-                              ArrayView<double>(section_diagonal));
+          double sum = 0., count = 0.;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!constrained[i])
+              {
+                sum += std::abs(
+                  matrix.diag_element(partitioner->local_to_global(i)));
+                count += 1.;
+              }
+          sum                = Utilities::MPI::sum(sum, comm);
+          count              = Utilities::MPI::sum(count, comm);
+          const double scale = count > 0. && sum > 0. ? sum / count : 1.;
+          for (const types::global_dof_index row : empty_rows)
+            matrix.set(row, row, scale);
+          // (Collective: every rank, whether it set anything.)
+          matrix.compress(VectorOperation::insert);
         }
+    }
 
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble_section_couplings(
+      const VectorType &u,
+      const Residual   &r)
+    {
+      // The sections' border: k_s = K g_s, k^_s = K^T g_s, kappa_s.
+      if (sections.empty())
+        return;
+      const unsigned int n = elements.n_dofs_per_element();
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        {
+          section_column[s]   = 0.;
+          section_row[s]      = 0.;
+          section_diagonal[s] = 0.;
+          section_rhs[s]      = -r.section_residual[s];
+        }
+      elements.compute_section_couplings(
+        u,
+        [&](const unsigned int *dofs,
+            const unsigned int  s,
+            const double       *K_g,
+            const double       *KT_g,
+            const double        gKg) {
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              section_column[s].local_element(dofs[i]) += K_g[i];
+              section_row[s].local_element(dofs[i]) += KT_g[i];
+            }
+          section_diagonal[s] += gKg;
+        });
+      for (unsigned int s = 0; s < sections.size(); ++s)
+        {
+          section_column[s].compress(VectorOperation::add);
+          section_row[s].compress(VectorOperation::add);
+        }
+      Utilities::MPI::sum(ArrayView<const double>(section_diagonal),
+                          comm,
+                          ArrayView<double>(section_diagonal));
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::assemble_border(const Residual &r)
+    {
       // The bordered block: the sections' diagonal, the parts' g^T K g
       // with their geometric stiffness, and the couplings between the two.
       const unsigned int n_sections = sections.size();
@@ -1016,41 +1205,40 @@ namespace rubberdyn
       border.reinit(n_sections + n_parts, n_sections + n_parts);
       for (unsigned int s = 0; s < n_sections; ++s)
         border(s, s) = section_diagonal[s];
-      if (parts)
+      if (!parts)
+        return;
+      for (unsigned int j = 0; j < n_parts; ++j)
         {
-          for (unsigned int j = 0; j < n_parts; ++j)
-            {
-              part_column[j].compress(VectorOperation::add);
-              part_row[j].compress(VectorOperation::add);
-              // Column j of g_k^T K g_j: the modes' components of K g_j.
-              const std::vector<double> column = parts->project(part_column[j]);
-              for (unsigned int k = 0; k < n_parts; ++k)
-                border(n_sections + k, n_sections + j) = column[k];
-            }
-          part_stiffness.resize(n_parts);
-          for (unsigned int j = 0; j < n_parts; ++j)
-            part_stiffness[j] = border(n_sections + j, n_sections + j);
-          FullMatrix<double> geometric(n_parts, n_parts);
-          parts->add_geometric_stiffness(r.force, geometric);
+          part_column[j].compress(VectorOperation::add);
+          part_row[j].compress(VectorOperation::add);
+          // Column j of g_k^T K g_j: the modes' components of K g_j.
+          const std::vector<double> column = parts->project(part_column[j]);
           for (unsigned int k = 0; k < n_parts; ++k)
-            for (unsigned int j = 0; j < n_parts; ++j)
-              border(n_sections + k, n_sections + j) += geometric(k, j);
-          for (unsigned int s = 0; s < n_sections; ++s)
-            {
-              // g_j^T K g_s = g_j . k_s and g_s^T K g_j = g_j . k^_s.
-              const std::vector<double> by_column =
-                parts->project(section_column[s]);
-              const std::vector<double> by_row = parts->project(section_row[s]);
-              for (unsigned int j = 0; j < n_parts; ++j)
-                {
-                  border(n_sections + j, s) = by_column[j];
-                  border(s, n_sections + j) = by_row[j];
-                }
-            }
-          part_rhs = r.part_residual;
-          for (double &value : part_rhs)
-            value = -value;
+            border(n_sections + k, n_sections + j) = column[k];
         }
+      part_stiffness.resize(n_parts);
+      for (unsigned int j = 0; j < n_parts; ++j)
+        part_stiffness[j] = border(n_sections + j, n_sections + j);
+      FullMatrix<double> geometric(n_parts, n_parts);
+      parts->add_geometric_stiffness(r.force, geometric);
+      for (unsigned int k = 0; k < n_parts; ++k)
+        for (unsigned int j = 0; j < n_parts; ++j)
+          border(n_sections + k, n_sections + j) += geometric(k, j);
+      for (unsigned int s = 0; s < n_sections; ++s)
+        {
+          // g_j^T K g_s = g_j . k_s and g_s^T K g_j = g_j . k^_s.
+          const std::vector<double> by_column =
+            parts->project(section_column[s]);
+          const std::vector<double> by_row = parts->project(section_row[s]);
+          for (unsigned int j = 0; j < n_parts; ++j)
+            {
+              border(n_sections + j, s) = by_column[j];
+              border(s, n_sections + j) = by_row[j];
+            }
+        }
+      part_rhs = r.part_residual;
+      for (double &value : part_rhs)
+        value = -value;
     }
 
 
@@ -1067,80 +1255,10 @@ namespace rubberdyn
     {
       // One factorisation (or preconditioner) of K for every right-hand
       // side: -r, then each section's k_s.
-      std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
-      SolverControl                                   direct_control(1, 0.);
-      if (use_direct)
-        {
-          TrilinosWrappers::SolverDirect::AdditionalData data(
-            false, settings.direct_solver);
-          direct =
-            std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
-                                                             data);
-          direct->initialize(matrix);
-        }
-      else
-        {
-          // ML with the six rigid-body modes as its near-null space: the
-          // AdditionalData's list, then the modes by hand (deal.II 9.4's
-          // constant_modes carry translations only).
-          TrilinosWrappers::PreconditionAMG::AdditionalData data;
-          data.elliptic              = true;
-          data.higher_order_elements = false;
-          data.smoother_sweeps       = 2;
-          data.aggregation_threshold = 1e-4;
-          Teuchos::ParameterList              list;
-          std::unique_ptr<Epetra_MultiVector> unused_modes;
-          data.set_parameters(list, unused_modes, matrix);
-          list.set("null space: type", "pre-computed");
-          list.set("null space: dimension", 6);
-          list.set("null space: vectors", rigid_body_modes.data());
-          // Aggregate nodes, not single dofs: the three displacement dofs of
-          // a node are consecutive (deal.II's numbering of FESystem, never
-          // renumbered here), and the six modes couple them. deal.II's list
-          // leaves ML's default of one equation per node; with three, the
-          // bonded tube (tube_16, K/G = 1250) takes 19 316 CG iterations
-          // instead of 34 492, and half the time.
-          list.set("PDE equations", 3);
-          amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          amg->initialize(matrix.trilinos_matrix(), list);
-        }
-      const auto linear_solve = [&](TrilinosWrappers::MPI::Vector       &x,
-                                    const TrilinosWrappers::MPI::Vector &b) {
-        x = 0.;
-        if (use_direct)
-          {
-            direct->solve(x, b);
-            return 0u;
-          }
-        if (b.l2_norm() == 0.)
-          return 0u;
-        SolverControl control(10000, settings.linear_tolerance * b.l2_norm());
-        // CG where the tangent is symmetric (hyperelastic laws: the
-        // element force is an energy gradient), GMRES otherwise, and
-        // GMRES also when CG breaks down: away from equilibrium (a large
-        // predictor, buckling) the symmetric tangent can be indefinite.
-        const auto gmres = [&]() {
-          x = 0.;
-          TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
-          TrilinosWrappers::SolverGMRES solver(control, gmres_data);
-          solver.solve(matrix, x, b, *amg);
-          return control.last_step();
-        };
-        if (!symmetric())
-          return gmres();
-        try
-          {
-            TrilinosWrappers::SolverCG cg(control);
-            cg.solve(matrix, x, b, *amg);
-            return control.last_step();
-          }
-        catch (const std::exception &)
-          {
-            const unsigned int cg_iterations = control.last_step();
-            return cg_iterations + gmres();
-          }
-      };
-      unsigned int n_iter = linear_solve(solution, rhs);
+      SolverControl direct_control(1, 0.);
+      const std::unique_ptr<TrilinosWrappers::SolverDirect> direct =
+        factorise(direct_control);
+      unsigned int       n_iter  = linear_solve(direct.get(), solution, rhs);
       const unsigned int n_owned = partitioner->locally_owned_size();
       // a: the correction without the sections' (prescribed increments on
       // the constrained dofs).
@@ -1158,24 +1276,7 @@ namespace rubberdyn
       d_part.assign(n_parts, 0.);
       if (m == 0)
         return n_iter;
-      const auto column_of = [&](const unsigned int k) -> const VectorType & {
-        return k < n_sections ? section_column[k] :
-                                part_column[k - n_sections];
-      };
-      const auto row_of = [&](const unsigned int k) -> const VectorType & {
-        return k < n_sections ? section_row[k] : part_row[k - n_sections];
-      };
-      // A part's direction that nothing stiffens cannot be solved: say
-      // which, instead of a singular system's noise.
-      for (unsigned int j = 0; j < n_parts; ++j)
-        if (!(part_stiffness[j] > 0.))
-          throw QuasiStaticFailure(
-            parts->describe(j) +
-            " is an unknown of the equilibrium, but no element and no "
-            "contact holds it there (g^T K g = " +
-            short_number(part_stiffness[j]) +
-            "); hold that direction (Rigid motion) or let the part stand "
-            "still (Quasi-static motion = held)");
+      check_part_stiffness();
 
       // x = K^{-1} (factor v) on the free dofs, for a v on all local dofs.
       TrilinosWrappers::MPI::Vector column(rhs), b_k(rhs);
@@ -1191,67 +1292,20 @@ namespace rubberdyn
             }
         column.set(indices, values);
         column.compress(VectorOperation::insert);
-        return linear_solve(b_k, column);
+        return linear_solve(direct.get(), b_k, column);
       };
       // b_k = K^{-1} k_k on the free dofs (zero on the constrained ones).
       std::vector<VectorType> b(m);
       for (unsigned int k = 0; k < m; ++k)
         {
-          n_iter += solve_free(column_of(k), 1.);
+          n_iter += solve_free(bordered_column(k), 1.);
           b[k].reinit(partitioner);
           for (unsigned int i = 0; i < n_owned; ++i)
             b[k].local_element(i) =
               constrained[i] ? 0. : b_k[partitioner->local_to_global(i)];
         }
-      // The prescribed shortening increments; then the unknowns (the
-      // force-controlled sections, the parts) from
-      // k^_k . (a - sum_l b_l dd_l) + sum_l D_kl dd_l = rhs_k.
-      std::vector<double>       dd(m, 0.);
-      std::vector<unsigned int> unknown;
-      for (unsigned int k = 0; k < m; ++k)
-        if (k >= n_sections || section_unknown[k])
-          unknown.push_back(k);
-        else
-          dd[k] = predictor ? delta_increment[k] : 0.;
-      const auto dot = [&](const VectorType &x, const VectorType &y) {
-        double sum = 0.;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          sum += x.local_element(i) * y.local_element(i);
-        return Utilities::MPI::sum(sum, comm);
-      };
-      if (!unknown.empty())
-        {
-          const unsigned int n_unknown = unknown.size();
-          FullMatrix<double> schur(n_unknown, n_unknown);
-          Vector<double>     right(n_unknown), solved(n_unknown);
-          for (unsigned int i = 0; i < n_unknown; ++i)
-            {
-              const unsigned int k = unknown[i];
-              right(i) = (k < n_sections ? section_rhs[k] :
-                                           part_rhs[k - n_sections]) -
-                         dot(row_of(k), du);
-              for (unsigned int l = 0; l < m; ++l)
-                {
-                  const double entry = border(k, l) - dot(row_of(k), b[l]);
-                  const auto   found =
-                    std::find(unknown.begin(), unknown.end(), l);
-                  if (found != unknown.end())
-                    schur(i, found - unknown.begin()) = entry;
-                  else
-                    right(i) -= entry * dd[l];
-                }
-            }
-          schur.gauss_jordan();
-          schur.vmult(solved, right);
-          for (unsigned int i = 0; i < n_unknown; ++i)
-            {
-              if (!std::isfinite(solved(i)))
-                throw QuasiStaticFailure(
-                  "the bordered equations of the pretension sections and "
-                  "rigid parts are singular");
-              dd[unknown[i]] = solved(i);
-            }
-        }
+      const std::vector<double> dd =
+        bordered_increments(du, b, delta_increment, predictor);
       for (unsigned int k = 0; k < m; ++k)
         if (dd[k] != 0.)
           du.add(-dd[k], b[k]);
@@ -1280,6 +1334,191 @@ namespace rubberdyn
       if (parts)
         parts->add_linear_motion(d_part, du);
       return n_iter;
+    }
+
+
+
+    std::unique_ptr<TrilinosWrappers::SolverDirect>
+    QuasiStaticSolver::Implementation::factorise(SolverControl &direct_control)
+    {
+      if (use_direct)
+        {
+          TrilinosWrappers::SolverDirect::AdditionalData data(
+            false,
+            settings.direct_solver);
+          auto direct =
+            std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
+                                                             data);
+          direct->initialize(matrix);
+          return direct;
+        }
+      // ML with the six rigid-body modes as its near-null space: the
+      // AdditionalData's list, then the modes by hand (deal.II 9.4's
+      // constant_modes carry translations only).
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 1e-4;
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> unused_modes;
+      data.set_parameters(list, unused_modes, matrix);
+      list.set("null space: type", "pre-computed");
+      list.set("null space: dimension", 6);
+      list.set("null space: vectors", rigid_body_modes.data());
+      // Aggregate nodes, not single dofs: the three displacement dofs of
+      // a node are consecutive (deal.II's numbering of FESystem, never
+      // renumbered here), and the six modes couple them. deal.II's list
+      // leaves ML's default of one equation per node; with three, the
+      // bonded tube (tube_16, K/G = 1250) takes 19 316 CG iterations
+      // instead of 34 492, and half the time.
+      list.set("PDE equations", 3);
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      amg->initialize(matrix.trilinos_matrix(), list);
+      return nullptr;
+    }
+
+
+
+    unsigned int
+    QuasiStaticSolver::Implementation::linear_solve(
+      TrilinosWrappers::SolverDirect      *direct,
+      TrilinosWrappers::MPI::Vector       &x,
+      const TrilinosWrappers::MPI::Vector &b)
+    {
+      x = 0.;
+      if (use_direct)
+        {
+          direct->solve(x, b);
+          return 0u;
+        }
+      if (b.l2_norm() == 0.)
+        return 0u;
+      SolverControl control(10000, settings.linear_tolerance * b.l2_norm());
+      // CG where the tangent is symmetric (hyperelastic laws: the
+      // element force is an energy gradient), GMRES otherwise, and
+      // GMRES also when CG breaks down: away from equilibrium (a large
+      // predictor, buckling) the symmetric tangent can be indefinite.
+      const auto gmres = [&]() {
+        x = 0.;
+        TrilinosWrappers::SolverGMRES::AdditionalData gmres_data(false, 200);
+        TrilinosWrappers::SolverGMRES solver(control, gmres_data);
+        solver.solve(matrix, x, b, *amg);
+        return control.last_step();
+      };
+      if (!symmetric())
+        return gmres();
+      try
+        {
+          TrilinosWrappers::SolverCG cg(control);
+          cg.solve(matrix, x, b, *amg);
+          return control.last_step();
+        }
+      catch (const std::exception &)
+        {
+          const unsigned int cg_iterations = control.last_step();
+          return cg_iterations + gmres();
+        }
+    }
+
+
+
+    void
+    QuasiStaticSolver::Implementation::check_part_stiffness() const
+    {
+      // A part's direction that nothing stiffens cannot be solved: say
+      // which, instead of a singular system's noise.
+      const unsigned int n_parts = parts ? parts->n_unknowns() : 0;
+      for (unsigned int j = 0; j < n_parts; ++j)
+        if (!(part_stiffness[j] > 0.))
+          throw QuasiStaticFailure(
+            parts->describe(j) +
+            " is an unknown of the equilibrium, but no element and no "
+            "contact holds it there (g^T K g = " +
+            short_number(part_stiffness[j]) +
+            "); hold that direction (Rigid motion) or let the part stand "
+            "still (Quasi-static motion = held)");
+    }
+
+
+
+    const VectorType &
+    QuasiStaticSolver::Implementation::bordered_column(
+      const unsigned int k) const
+    {
+      const unsigned int n_sections = sections.size();
+      return k < n_sections ? section_column[k] : part_column[k - n_sections];
+    }
+
+
+
+    const VectorType &
+    QuasiStaticSolver::Implementation::bordered_row(const unsigned int k) const
+    {
+      const unsigned int n_sections = sections.size();
+      return k < n_sections ? section_row[k] : part_row[k - n_sections];
+    }
+
+
+
+    std::vector<double>
+    QuasiStaticSolver::Implementation::bordered_increments(
+      const VectorType              &a,
+      const std::vector<VectorType> &b,
+      const std::vector<double>     &delta_increment,
+      const bool                     predictor) const
+    {
+      const unsigned int n_owned    = partitioner->locally_owned_size();
+      const unsigned int n_sections = sections.size();
+      const unsigned int m          = b.size();
+      // The prescribed shortening increments; then the unknowns (the
+      // force-controlled sections, the parts) from
+      // k^_k . (a - sum_l b_l dd_l) + sum_l D_kl dd_l = rhs_k.
+      std::vector<double>       dd(m, 0.);
+      std::vector<unsigned int> unknown;
+      for (unsigned int k = 0; k < m; ++k)
+        if (k >= n_sections || section_unknown[k])
+          unknown.push_back(k);
+        else
+          dd[k] = predictor ? delta_increment[k] : 0.;
+      if (unknown.empty())
+        return dd;
+      const auto dot = [&](const VectorType &x, const VectorType &y) {
+        double sum = 0.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          sum += x.local_element(i) * y.local_element(i);
+        return Utilities::MPI::sum(sum, comm);
+      };
+      const unsigned int n_unknown = unknown.size();
+      FullMatrix<double> schur(n_unknown, n_unknown);
+      Vector<double>     right(n_unknown), solved(n_unknown);
+      for (unsigned int i = 0; i < n_unknown; ++i)
+        {
+          const unsigned int k = unknown[i];
+          right(i) =
+            (k < n_sections ? section_rhs[k] : part_rhs[k - n_sections]) -
+            dot(bordered_row(k), a);
+          for (unsigned int l = 0; l < m; ++l)
+            {
+              const double entry = border(k, l) - dot(bordered_row(k), b[l]);
+              const auto   found = std::find(unknown.begin(), unknown.end(), l);
+              if (found != unknown.end())
+                schur(i, found - unknown.begin()) = entry;
+              else
+                right(i) -= entry * dd[l];
+            }
+        }
+      schur.gauss_jordan();
+      schur.vmult(solved, right);
+      for (unsigned int i = 0; i < n_unknown; ++i)
+        {
+          if (!std::isfinite(solved(i)))
+            throw QuasiStaticFailure(
+              "the bordered equations of the pretension sections and "
+              "rigid parts are singular");
+          dd[unknown[i]] = solved(i);
+        }
+      return dd;
     }
 
 

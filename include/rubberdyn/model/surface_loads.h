@@ -258,6 +258,36 @@ namespace rubberdyn
       void
       evaluate(Load &load, const EvaluationPoint &point) const;
 
+      // The steps of the constructor.
+
+      /**
+       * The load of boundary condition @p bc on the locally owned cells of
+       * @p dof_handler, ready for evaluate().
+       *
+       * @throws InputError if @p bc is not a load, has the wrong number of
+       *   functions or names no boundary face.
+       */
+      Load
+      make_load(const DoFHandler<3, 3>  &dof_handler,
+                const BoundaryCondition &bc) const;
+
+      /**
+       * The faces of @p load's boundary ids on the locally owned cells:
+       * their nodes (every node once), reference positions, quadrature
+       * points and weights.
+       */
+      void
+      add_faces(const DoFHandler<3, 3>  &dof_handler,
+                const BoundaryCondition &bc,
+                Load                    &load) const;
+
+      /**
+       * The nodal areas of @p load, and the vectors of its evaluation;
+       * drops what its evaluation does not need.
+       */
+      static void
+      prepare_for_evaluation(Load &load);
+
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       std::vector<Load>                                  loads;
       /** Whether previous_force and previous_displacement hold a step. */
