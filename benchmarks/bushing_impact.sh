@@ -15,20 +15,21 @@
 #   PENALTY_STEP  every contact pair's Penalty time step (ms; default 0)
 #   NAME          output directory and file prefix (default bushing_impact)
 # An EXECUTABLE that does not know the two entries (an older build) runs
-# with both 0.
+# with both 0. BUSHING_MESH=meshes/bushing_1.msh in the environment takes
+# another mesh of parameter_files/ (the coarse n = 1).
 set -euo pipefail
 exe=$1; source_dir=$2; nproc=${3:-2}; impact=${4:-0.3}; target=${5:-0}
 penalty_step=${6:-0}; name=${7:-bushing_impact}
 python3 - "$source_dir/parameter_files/bushing_test_4.prm" "$source_dir/parameter_files" \
-  "$impact" "$target" "$penalty_step" "$name" > "$name.prm" <<'PY'
+  "$impact" "$target" "$penalty_step" "$name" "${BUSHING_MESH:-}" > "$name.prm" <<'PY'
 import re, sys
-path, folder, impact, target, penalty_step, name = sys.argv[1:]
+path, folder, impact, target, penalty_step, name, mesh = sys.argv[1:]
 text = open(path).read()
 # The pretension section out (no preload), explicit from the start.
 start = text.index("subsection Pretension sections")
 end = text.index("\nend\n", start) + 5
 text = text[:start] + text[end:]
-text = re.sub(r"set Mesh file *= *(\S+)", lambda m: "set Mesh file = " + folder + "/" + m.group(1), text)
+text = re.sub(r"set Mesh file *= *(\S+)", lambda m: "set Mesh file = " + folder + "/" + (mesh or m.group(1)), text)
 text = re.sub(r"set Scheme *=.*", "set Scheme = explicit", text)
 text = re.sub(r"set End time *=.*", "set End time = " + impact, text)
 text = re.sub(r"set Output directory *=.*", "set Output directory = " + name, text)
