@@ -204,267 +204,310 @@ namespace rubberdyn
 
 
 
-    void
-    resolve_initial_penetrations(model::Model &model)
+    namespace
     {
-      if (model.initial_penetrations)
-        return;
-      const MPI_Comm comm      = model.comm;
-      const double   tolerance = 1e-9 * model_size(model);
-      std::vector<InitialPenetrationReport> reports;
-      // The moves of all interactions so far (owned entries).
-      VectorType u(model.partitioner);
-      bool       any_moved = false;
+    // What an interaction's penetrations ask for: a report, or the
+    // refusal.
+    InitialPenetrationReport
+    judged_report(const Penetrations      &found_nodes,
+                  const std::string       &interaction,
+                  const std::string       &entry,
+                  const InitialPenetration action,
+                  const std::string       &slave_nodes,
+                  const std::string       &master_surface)
+    {
+      InitialPenetrationReport report;
+      report.interaction     = interaction;
+      report.entry           = entry;
+      report.action          = action;
+      report.n_nodes         = found_nodes.n_nodes;
+      report.max_penetration = found_nodes.largest;
+      report.where           = found_nodes.where;
+      report.found           = found(report, slave_nodes, master_surface);
+      if (action == InitialPenetration::refuse)
+        throw InputError(
+          entry,
+          report.found +
+            ": correct the mesh, or set this entry to 'move slave nodes "
+            "out' (moves them onto the surface before the run) or "
+            "'report' (runs with the overlap)");
+      return report;
+    }
 
-      // What an interaction's penetrations ask for: nothing, a report, or
-      // the refusal.
-      const auto judge = [&](const Penetrations      &found_nodes,
-                             const std::string       &interaction,
-                             const std::string       &entry,
-                             const InitialPenetration action,
-                             const std::string       &slave_nodes,
-                             const std::string       &master_surface) {
-        InitialPenetrationReport report;
-        report.interaction     = interaction;
-        report.entry           = entry;
-        report.action          = action;
-        report.n_nodes         = found_nodes.n_nodes;
-        report.max_penetration = found_nodes.largest;
-        report.where           = found_nodes.where;
-        report.found           = found(report, slave_nodes, master_surface);
-        if (action == InitialPenetration::refuse)
-          throw InputError(
-            entry,
-            report.found +
-              ": correct the mesh, or set this entry to 'move slave nodes "
-              "out' (moves them onto the surface before the run) or "
-              "'report' (runs with the overlap)");
-        return report;
+
+
+    // A frictionless or Coulomb pair, with the mean gaps of its own mortar
+    // integrals: its report into @p reports, its moves into @p u (owned
+    // entries). Returns whether it moved nodes. Collective.
+    bool
+    resolve_pair(const model::Model                    &model,
+                 const model::ContactPairDefinition    &definition,
+                 const double                           tolerance,
+                 VectorType                            &u,
+                 std::vector<InitialPenetrationReport> &reports)
+    {
+      const MPI_Comm comm = model.comm;
+      if (definition.type == model::ContactPairDefinition::Type::tied)
+        return false;
+      const std::string interaction = "Contact pairs/" + definition.name;
+      const std::string entry       = interaction + "/Initial penetration";
+      const std::string slave_nodes = "slave nodes",
+                        master_surface = "the master surface";
+      MortarContactPair pair(model, definition);
+      const auto measure = [&](const std::vector<SlaveNodeGap> &gaps) {
+        Penetrations p;
+        for (const SlaveNodeGap &g : gaps)
+          if (-g.gap > tolerance)
+            p.add(-g.gap, g.x, tolerance);
+        p.gather(comm, tolerance);
+        return p;
       };
-
-      // The frictionless and Coulomb pairs, each with the mean gaps of its
-      // own mortar integrals.
-      for (const model::ContactPairDefinition &definition : model.contact_pairs)
+      std::vector<SlaveNodeGap> gaps        = pair.slave_node_gaps(u);
+      Penetrations              penetrating = measure(gaps);
+      if (penetrating.n_nodes == 0)
+        return false;
+      bool                     moved_any = false;
+      InitialPenetrationReport report =
+        judged_report(penetrating,
+              interaction,
+              entry,
+              definition.initial_penetration,
+              slave_nodes,
+              master_surface);
+      if (definition.initial_penetration ==
+          InitialPenetration::move_slave_nodes_out)
         {
-          if (definition.type == model::ContactPairDefinition::Type::tied)
-            continue;
-          const std::string interaction = "Contact pairs/" + definition.name;
-          const std::string entry       = interaction + "/Initial penetration";
-          const std::string slave_nodes = "slave nodes",
-                            master_surface = "the master surface";
-          MortarContactPair pair(model, definition);
-          const auto measure = [&](const std::vector<SlaveNodeGap> &gaps) {
-            Penetrations p;
-            for (const SlaveNodeGap &g : gaps)
-              if (-g.gap > tolerance)
-                p.add(-g.gap, g.x, tolerance);
-            p.gather(comm, tolerance);
-            return p;
-          };
-          std::vector<SlaveNodeGap> gaps        = pair.slave_node_gaps(u);
-          Penetrations              penetrating = measure(gaps);
-          if (penetrating.n_nodes == 0)
-            continue;
-          InitialPenetrationReport report =
-            judge(penetrating,
-                  interaction,
-                  entry,
-                  definition.initial_penetration,
-                  slave_nodes,
-                  master_surface);
-          if (definition.initial_penetration ==
-              InitialPenetration::move_slave_nodes_out)
-            {
-              // Both sides' nodes carry gaps in a two-pass or self-contact
-              // pair: each moves half the way, and the next rounds close
-              // what is left.
-              const double share =
-                definition.two_pass || definition.slave_boundary_ids ==
-                                         definition.master_boundary_ids ?
-                  0.5 :
-                  1.;
-              VectorType moved(model.partitioner);
-              // This rank's moved nodes (by x dof).
-              std::map<types::global_dof_index,
-                       std::array<types::global_dof_index, 3>>
-                           nodes;
-              unsigned int round = 0;
-              for (; penetrating.n_nodes > 0 && round < 100; ++round)
-                {
-                  VectorType delta(model.partitioner);
-                  for (const SlaveNodeGap &g : gaps)
-                    if (-g.gap > tolerance)
-                      {
-                        for (unsigned int d = 0; d < 3; ++d)
-                          delta(g.dofs[d]) += share * g.gap * g.normal[d];
-                        nodes[g.dofs[0]] = {{g.dofs[0], g.dofs[1], g.dofs[2]}};
-                      }
-                  delta.compress(VectorOperation::add);
-                  u += delta;
-                  moved += delta;
-                  gaps        = pair.slave_node_gaps(u);
-                  penetrating = measure(gaps);
-                }
-              if (penetrating.n_nodes > 0)
-                throw InputError(entry,
-                                 "moving the slave nodes out left " +
-                                   std::to_string(penetrating.n_nodes) +
-                                   " of them inside the master surface after " +
-                                   std::to_string(round) + " moves, by up to " +
-                                   parameter_tools::format_short(
-                                     penetrating.largest) +
-                                   " mm (at " + coordinates(penetrating.where) +
-                                   "): correct the mesh");
-              moved.update_ghost_values();
-              durable_files::throw_if_any(comm,
-                                          entry,
-                                          refused_move(model,
-                                                       moved,
-                                                       slave_nodes));
-              const auto [n, largest] = count_moves(nodes, moved);
-              report.n_moved          = Utilities::MPI::sum(n, comm);
-              report.max_move         = Utilities::MPI::max(largest, comm);
-              any_moved               = true;
-            }
-          reports.push_back(report);
-        }
-
-      // The rigid surfaces: the distance of each boundary node, at the
-      // surface's position at t = 0 (as given).
-      const FiniteElement<3>              &fe = model.dof_handler.get_fe();
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const model::RigidSurfaceDefinition &definition :
-           model.rigid_surfaces)
-        {
-          const std::string interaction = "Rigid surfaces/" + definition.name;
-          const std::string entry       = "Contact/Initial penetration";
-          const std::string slave_nodes = "nodes of its Boundary ids",
-                            master_surface =
-                              "the rigid surface '" + definition.name + "'";
-          // This rank's nodes on the surface's faces (owned dofs), by x
-          // dof: dofs and reference position.
+          // Both sides' nodes carry gaps in a two-pass or self-contact
+          // pair: each moves half the way, and the next rounds close
+          // what is left.
+          const double share =
+            definition.two_pass || definition.slave_boundary_ids ==
+                                     definition.master_boundary_ids ?
+              0.5 :
+              1.;
+          VectorType moved(model.partitioner);
+          // This rank's moved nodes (by x dof).
           std::map<types::global_dof_index,
-                   std::pair<std::array<types::global_dof_index, 3>, Point<3>>>
-            nodes;
-          for (const auto &cell : model.dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned() || cell->is_ghost())
-              {
-                bool on_surface = false;
-                for (const unsigned int f : cell->face_indices())
-                  on_surface = on_surface || (cell->at_boundary(f) &&
-                                              definition.boundary_ids.count(
-                                                cell->face(f)->boundary_id()));
-                if (!on_surface)
-                  continue;
-                cell->get_dof_indices(dofs);
-                for (const unsigned int f : cell->face_indices())
-                  if (cell->at_boundary(f) && definition.boundary_ids.count(
-                                                cell->face(f)->boundary_id()))
-                    for (const unsigned int k : cell->face(f)->vertex_indices())
-                      {
-                        const unsigned int v =
-                          GeometryInfo<3>::face_to_cell_vertices(f, k);
-                        std::array<types::global_dof_index, 3> node;
-                        for (unsigned int d = 0; d < 3; ++d)
-                          node[d] = dofs[fe.component_to_system_index(d, v)];
-                        if (model.partitioner->in_local_range(node[0]))
-                          nodes[node[0]] = {node, cell->vertex(v)};
-                      }
-              }
-          const auto gap_of =
-            [&](const std::array<types::global_dof_index, 3> &node,
-                const Point<3>                               &X,
-                Point<3>                                     &x,
-                double                                       &gap,
-                Tensor<1, 3>                                 &normal) {
-              x = X;
-              for (unsigned int d = 0; d < 3; ++d)
-                x[d] += u(node[d]);
-              RigidSurfaceContact::gap_and_normal(definition.surface,
-                                                  x,
-                                                  gap,
-                                                  normal);
-            };
-          Penetrations penetrating;
+                   std::array<types::global_dof_index, 3>>
+                       nodes;
+          unsigned int round = 0;
+          for (; penetrating.n_nodes > 0 && round < 100; ++round)
+            {
+              VectorType delta(model.partitioner);
+              for (const SlaveNodeGap &g : gaps)
+                if (-g.gap > tolerance)
+                  {
+                    for (unsigned int d = 0; d < 3; ++d)
+                      delta(g.dofs[d]) += share * g.gap * g.normal[d];
+                    nodes[g.dofs[0]] = {{g.dofs[0], g.dofs[1], g.dofs[2]}};
+                  }
+              delta.compress(VectorOperation::add);
+              u += delta;
+              moved += delta;
+              gaps        = pair.slave_node_gaps(u);
+              penetrating = measure(gaps);
+            }
+          if (penetrating.n_nodes > 0)
+            throw InputError(entry,
+                             "moving the slave nodes out left " +
+                               std::to_string(penetrating.n_nodes) +
+                               " of them inside the master surface after " +
+                               std::to_string(round) + " moves, by up to " +
+                               parameter_tools::format_short(
+                                 penetrating.largest) +
+                               " mm (at " + coordinates(penetrating.where) +
+                               "): correct the mesh");
+          moved.update_ghost_values();
+          durable_files::throw_if_any(comm,
+                                      entry,
+                                      refused_move(model,
+                                                   moved,
+                                                   slave_nodes));
+          const auto [n, largest] = count_moves(nodes, moved);
+          report.n_moved          = Utilities::MPI::sum(n, comm);
+          report.max_move         = Utilities::MPI::max(largest, comm);
+          moved_any               = true;
+        }
+      reports.push_back(report);
+      return moved_any;
+    }
+
+
+
+    // A rigid surface: the distance of each node of its boundary ids, at
+    // the surface's position at t = 0 (as given); its report into
+    // @p reports, its moves into @p u. Returns whether it moved nodes.
+    // Collective.
+    bool
+    resolve_rigid_surface(const model::Model                    &model,
+                          const model::RigidSurfaceDefinition   &definition,
+                          const double                           tolerance,
+                          VectorType                            &u,
+                          std::vector<InitialPenetrationReport> &reports)
+    {
+      const MPI_Comm                       comm = model.comm;
+      const FiniteElement<3>              &fe   = model.dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      const std::string interaction = "Rigid surfaces/" + definition.name;
+      const std::string entry       = "Contact/Initial penetration";
+      const std::string slave_nodes = "nodes of its Boundary ids",
+                        master_surface =
+                          "the rigid surface '" + definition.name + "'";
+      // This rank's nodes on the surface's faces (owned dofs), by x
+      // dof: dofs and reference position.
+      std::map<types::global_dof_index,
+               std::pair<std::array<types::global_dof_index, 3>, Point<3>>>
+        nodes;
+      for (const auto &cell : model.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            bool on_surface = false;
+            for (const unsigned int f : cell->face_indices())
+              on_surface = on_surface || (cell->at_boundary(f) &&
+                                          definition.boundary_ids.count(
+                                            cell->face(f)->boundary_id()));
+            if (!on_surface)
+              continue;
+            cell->get_dof_indices(dofs);
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) && definition.boundary_ids.count(
+                                            cell->face(f)->boundary_id()))
+                for (const unsigned int k : cell->face(f)->vertex_indices())
+                  {
+                    const unsigned int v =
+                      GeometryInfo<3>::face_to_cell_vertices(f, k);
+                    std::array<types::global_dof_index, 3> node;
+                    for (unsigned int d = 0; d < 3; ++d)
+                      node[d] = dofs[fe.component_to_system_index(d, v)];
+                    if (model.partitioner->in_local_range(node[0]))
+                      nodes[node[0]] = {node, cell->vertex(v)};
+                  }
+          }
+      const auto gap_of =
+        [&](const std::array<types::global_dof_index, 3> &node,
+            const Point<3>                               &X,
+            Point<3>                                     &x,
+            double                                       &gap,
+            Tensor<1, 3>                                 &normal) {
+          x = X;
+          for (unsigned int d = 0; d < 3; ++d)
+            x[d] += u(node[d]);
+          RigidSurfaceContact::gap_and_normal(definition.surface,
+                                              x,
+                                              gap,
+                                              normal);
+        };
+      Penetrations penetrating;
+      for (const auto &[x_dof, node] : nodes)
+        {
+          (void)x_dof;
+          Point<3>     x;
+          double       gap;
+          Tensor<1, 3> normal;
+          gap_of(node.first, node.second, x, gap, normal);
+          if (-gap > tolerance)
+            penetrating.add(-gap, x, tolerance);
+        }
+      penetrating.gather(comm, tolerance);
+      if (penetrating.n_nodes == 0)
+        return false;
+      bool                     moved_any = false;
+      InitialPenetrationReport report =
+        judged_report(penetrating,
+              interaction,
+              entry,
+              definition.initial_penetration,
+              slave_nodes,
+              master_surface);
+      if (definition.initial_penetration ==
+          InitialPenetration::move_slave_nodes_out)
+        {
+          // Onto the surface along its normal (into the solid): exact
+          // in one move, the surfaces being analytic.
+          VectorType moved(model.partitioner);
+          std::map<types::global_dof_index,
+                   std::array<types::global_dof_index, 3>>
+            moved_nodes;
           for (const auto &[x_dof, node] : nodes)
             {
-              (void)x_dof;
               Point<3>     x;
               double       gap;
               Tensor<1, 3> normal;
               gap_of(node.first, node.second, x, gap, normal);
               if (-gap > tolerance)
-                penetrating.add(-gap, x, tolerance);
-            }
-          penetrating.gather(comm, tolerance);
-          if (penetrating.n_nodes == 0)
-            continue;
-          InitialPenetrationReport report =
-            judge(penetrating,
-                  interaction,
-                  entry,
-                  definition.initial_penetration,
-                  slave_nodes,
-                  master_surface);
-          if (definition.initial_penetration ==
-              InitialPenetration::move_slave_nodes_out)
-            {
-              // Onto the surface along its normal (into the solid): exact
-              // in one move, the surfaces being analytic.
-              VectorType moved(model.partitioner);
-              std::map<types::global_dof_index,
-                       std::array<types::global_dof_index, 3>>
-                moved_nodes;
-              for (const auto &[x_dof, node] : nodes)
                 {
-                  Point<3>     x;
-                  double       gap;
-                  Tensor<1, 3> normal;
-                  gap_of(node.first, node.second, x, gap, normal);
-                  if (-gap > tolerance)
-                    {
-                      for (unsigned int d = 0; d < 3; ++d)
-                        moved(node.first[d]) = -gap * normal[d];
-                      moved_nodes[x_dof] = node.first;
-                    }
+                  for (unsigned int d = 0; d < 3; ++d)
+                    moved(node.first[d]) = -gap * normal[d];
+                  moved_nodes[x_dof] = node.first;
                 }
-              u += moved;
-              moved.update_ghost_values();
-              durable_files::throw_if_any(comm,
-                                          entry + " (rigid surface '" +
-                                            definition.name + "')",
-                                          refused_move(model,
-                                                       moved,
-                                                       "the rigid surface's "
-                                                       "Boundary ids"));
-              const auto [n, largest] = count_moves(moved_nodes, moved);
-              report.n_moved          = Utilities::MPI::sum(n, comm);
-              report.max_move         = Utilities::MPI::max(largest, comm);
-              any_moved               = true;
             }
-          reports.push_back(report);
+          u += moved;
+          moved.update_ghost_values();
+          durable_files::throw_if_any(comm,
+                                      entry + " (rigid surface '" +
+                                        definition.name + "')",
+                                      refused_move(model,
+                                                   moved,
+                                                   "the rigid surface's "
+                                                   "Boundary ids"));
+          const auto [n, largest] = count_moves(moved_nodes, moved);
+          report.n_moved          = Utilities::MPI::sum(n, comm);
+          report.max_move         = Utilities::MPI::max(largest, comm);
+          moved_any               = true;
         }
+      reports.push_back(report);
+      return moved_any;
+    }
 
-      // The moves into the mesh: every vertex of this rank's cells (owned
-      // and ghost) once.
-      if (Utilities::MPI::logical_or(any_moved, comm))
+
+
+    // The moves into the mesh: every vertex of this rank's cells (owned
+    // and ghost) once; @p u ghosted.
+    void
+    move_vertices(model::Model &model, const VectorType &u)
+    {
+      const FiniteElement<3>              &fe = model.dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<bool> done(model.triangulation.n_vertices(), false);
+      for (const auto &cell : model.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            cell->get_dof_indices(dofs);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                if (done[cell->vertex_index(v)])
+                  continue;
+                done[cell->vertex_index(v)] = true;
+                for (unsigned int d = 0; d < 3; ++d)
+                  cell->vertex(v)[d] +=
+                    u(dofs[fe.component_to_system_index(d, v)]);
+              }
+          }
+    }
+    } // namespace
+
+
+
+    void
+    resolve_initial_penetrations(model::Model &model)
+    {
+      if (model.initial_penetrations)
+        return;
+      const double tolerance = 1e-9 * model_size(model);
+      std::vector<InitialPenetrationReport> reports;
+      // The moves of all interactions so far (owned entries).
+      VectorType u(model.partitioner);
+      bool       any_moved = false;
+      for (const model::ContactPairDefinition &definition : model.contact_pairs)
+        any_moved |= resolve_pair(model, definition, tolerance, u, reports);
+      for (const model::RigidSurfaceDefinition &definition :
+           model.rigid_surfaces)
+        any_moved |=
+          resolve_rigid_surface(model, definition, tolerance, u, reports);
+      if (Utilities::MPI::logical_or(any_moved, model.comm))
         {
           u.update_ghost_values();
-          std::vector<bool> done(model.triangulation.n_vertices(), false);
-          for (const auto &cell : model.dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned() || cell->is_ghost())
-              {
-                cell->get_dof_indices(dofs);
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    if (done[cell->vertex_index(v)])
-                      continue;
-                    done[cell->vertex_index(v)] = true;
-                    for (unsigned int d = 0; d < 3; ++d)
-                      cell->vertex(v)[d] +=
-                        u(dofs[fe.component_to_system_index(d, v)]);
-                  }
-              }
+          move_vertices(model, u);
         }
       model.initial_penetrations = std::move(reports);
     }
