@@ -165,13 +165,27 @@ namespace rubberdyn
         return "";
       }
 
-      /** The number of nodes @p moved moves and the largest move (mm),
-       * over this rank's nodes @p nodes (x, y, z dofs; ghosted @p moved). */
-      std::pair<unsigned int, double>
-      count_moves(const std::map<types::global_dof_index,
-                                 std::array<types::global_dof_index, 3>> &nodes,
-                  const VectorType                                       &moved)
+      /**
+       * A verdict on the moves @p moved (owned entries; its ghosts are
+       * updated here) of the nodes @p nodes (this rank's, by x dof):
+       * refused, naming @p entry, where one would fold an element of
+       * @p moved_nodes (every rank's verdict); else the number of nodes
+       * moved and the largest move (mm) of all ranks into @p report.
+       * Collective.
+       */
+      void
+      book_moves(const model::Model &model,
+                 const std::map<types::global_dof_index,
+                                std::array<types::global_dof_index, 3>> &nodes,
+                 VectorType                                             &moved,
+                 const std::string        &entry,
+                 const std::string        &moved_nodes,
+                 InitialPenetrationReport &report)
       {
+        moved.update_ghost_values();
+        durable_files::throw_if_any(model.comm,
+                                    entry,
+                                    refused_move(model, moved, moved_nodes));
         unsigned int n       = 0;
         double       largest = 0.;
         for (const auto &[x_dof, dofs] : nodes)
@@ -186,7 +200,8 @@ namespace rubberdyn
                 largest = std::max(largest, move.norm());
               }
           }
-        return {n, largest};
+        report.n_moved  = Utilities::MPI::sum(n, model.comm);
+        report.max_move = Utilities::MPI::max(largest, model.comm);
       }
 
       /** The text of a report: the count, the largest and where. */
@@ -266,14 +281,13 @@ namespace rubberdyn
       Penetrations              penetrating = measure(gaps);
       if (penetrating.n_nodes == 0)
         return false;
-      bool                     moved_any = false;
       InitialPenetrationReport report =
         judged_report(penetrating,
-              interaction,
-              entry,
-              definition.initial_penetration,
-              slave_nodes,
-              master_surface);
+                      interaction,
+                      entry,
+                      definition.initial_penetration,
+                      slave_nodes,
+                      master_surface);
       if (definition.initial_penetration ==
           InitialPenetration::move_slave_nodes_out)
         {
@@ -317,19 +331,11 @@ namespace rubberdyn
                                  penetrating.largest) +
                                " mm (at " + coordinates(penetrating.where) +
                                "): correct the mesh");
-          moved.update_ghost_values();
-          durable_files::throw_if_any(comm,
-                                      entry,
-                                      refused_move(model,
-                                                   moved,
-                                                   slave_nodes));
-          const auto [n, largest] = count_moves(nodes, moved);
-          report.n_moved          = Utilities::MPI::sum(n, comm);
-          report.max_move         = Utilities::MPI::max(largest, comm);
-          moved_any               = true;
+          book_moves(model, nodes, moved, entry, slave_nodes, report);
         }
       reports.push_back(report);
-      return moved_any;
+      return definition.initial_penetration ==
+             InitialPenetration::move_slave_nodes_out;
     }
 
 
@@ -411,14 +417,13 @@ namespace rubberdyn
       penetrating.gather(comm, tolerance);
       if (penetrating.n_nodes == 0)
         return false;
-      bool                     moved_any = false;
       InitialPenetrationReport report =
         judged_report(penetrating,
-              interaction,
-              entry,
-              definition.initial_penetration,
-              slave_nodes,
-              master_surface);
+                      interaction,
+                      entry,
+                      definition.initial_penetration,
+                      slave_nodes,
+                      master_surface);
       if (definition.initial_penetration ==
           InitialPenetration::move_slave_nodes_out)
         {
@@ -442,21 +447,16 @@ namespace rubberdyn
                 }
             }
           u += moved;
-          moved.update_ghost_values();
-          durable_files::throw_if_any(comm,
-                                      entry + " (rigid surface '" +
-                                        definition.name + "')",
-                                      refused_move(model,
-                                                   moved,
-                                                   "the rigid surface's "
-                                                   "Boundary ids"));
-          const auto [n, largest] = count_moves(moved_nodes, moved);
-          report.n_moved          = Utilities::MPI::sum(n, comm);
-          report.max_move         = Utilities::MPI::max(largest, comm);
-          moved_any               = true;
+          book_moves(model,
+                     moved_nodes,
+                     moved,
+                     entry + " (rigid surface '" + definition.name + "')",
+                     "the rigid surface's Boundary ids",
+                     report);
         }
       reports.push_back(report);
-      return moved_any;
+      return definition.initial_penetration ==
+             InitialPenetration::move_slave_nodes_out;
     }
 
 

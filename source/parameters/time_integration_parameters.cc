@@ -225,25 +225,27 @@ namespace rubberdyn
       require_positive(end_time, "Time integration/End time");
       require_positive(time_step_scale,
                        "Time integration/Time step scale factor");
-      // A target step longer than the whole run is no time step: it would
-      // make the model arbitrarily heavy (1e308 ms overflows the added
-      // density to infinity) to take a single step.
-      const auto refuse_longer_than_run = [this](const std::string &entry,
-                                                 const double       step) {
-        if (step > end_time)
-          throw InputError(entry,
-                           "is " + parameter_tools::format_short(step) +
-                             " ms, longer than the End time " +
-                             parameter_tools::format_short(end_time) +
-                             " ms; a time step cannot be longer than the run");
-      };
-      refuse_longer_than_run("Time integration/Mass scaling time step",
-                             mass_scaling_time_step);
-      refuse_longer_than_run(
+      require_step_within_run("Time integration/Mass scaling time step",
+                              mass_scaling_time_step);
+      require_step_within_run(
         "Time integration/Selective mass scaling time step",
         selective_mass_scaling_time_step);
       require_positive(selective_mass_scaling_tolerance,
                        "Time integration/Selective mass scaling tolerance");
+    }
+
+
+
+    void
+    TimeIntegration::require_step_within_run(const std::string &entry,
+                                             const double       step) const
+    {
+      if (step > end_time)
+        throw InputError(entry,
+                         "is " + parameter_tools::format_short(step) +
+                           " ms, longer than the End time " +
+                           parameter_tools::format_short(end_time) +
+                           " ms; a time step cannot be longer than the run");
     }
   } // namespace parameters
 } // namespace rubberdyn

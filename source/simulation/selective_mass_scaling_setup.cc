@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <rubberdyn/base/exceptions.h>
-#include <rubberdyn/base/parameter_tools.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/model/model.h>
 #include <rubberdyn/simulation/selective_mass_scaling_setup.h>
@@ -71,18 +70,10 @@ namespace rubberdyn
             result.parts[p].target_time_step =
               part.selective_mass_scaling_time_step.value_or(
                 time_integration.selective_mass_scaling_time_step);
-            // (The model-wide target is checked with the other Time
-            // integration entries.)
-            if (part.selective_mass_scaling_time_step.value_or(0.) >
-                time_integration.end_time)
-              throw InputError(
+            if (part.selective_mass_scaling_time_step)
+              time_integration.require_step_within_run(
                 "Parts/" + part.name + "/Selective mass scaling time step",
-                "is " +
-                  parameter_tools::format_short(
-                    *part.selective_mass_scaling_time_step) +
-                  " ms, longer than the End time " +
-                  parameter_tools::format_short(time_integration.end_time) +
-                  " ms; a time step cannot be longer than the run");
+                *part.selective_mass_scaling_time_step);
             any_target |= result.parts[p].target_time_step > 0.;
           }
         if (!any_target)

@@ -911,10 +911,18 @@ namespace rubberdyn
       std::vector<unsigned int> component(dof_component.begin(),
                                           dof_component.end());
       mass_scaling->initialize(mass, component, prescribed);
+      bool scaled_prescribed = false;
       for (unsigned int i = 0; i < n_owned; ++i)
-        AssertThrow(!(rigid_dof[i] && mass_scaling->scaled(i)),
-                    ExcMessage("A rigid part's node is in an element with "
-                               "selective mass scaling"));
+        {
+          AssertThrow(!(rigid_dof[i] && mass_scaling->scaled(i)),
+                      ExcMessage("A rigid part's node is in an element with "
+                                 "selective mass scaling"));
+          scaled_prescribed |= prescribed[i] && mass_scaling->scaled(i);
+        }
+      // The reactions need A a only where a scaled element holds a
+      // prescribed dof, on some rank: decided once, for all of them.
+      reactions_need_added_mass =
+        Utilities::MPI::logical_or(scaled_prescribed, comm);
       for (VectorType *vector :
            {&acceleration, &added_inertia, &velocity_before, &mean_velocity})
         vector->reinit(partitioner);
@@ -961,9 +969,8 @@ namespace rubberdyn
                               number(current_time) + " ms, step " +
                               std::to_string(step_number));
         }
-      // (Collective: on every rank, whether or not it owns a constrained
-      // dof.)
-      if (constraints != nullptr)
+      // (Collective: on every rank, whether or not it owns such a dof.)
+      if (reactions_need_added_mass)
         mass_scaling->multiply_added_mass(acceleration, added_inertia);
       timing.mass_scaling +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -51,49 +51,12 @@ namespace rubberdyn
 
 
 
-    void
-    ScaledElement::deformation_part(const double x[8][3], double y[8][3]) const
-    {
-      // Translation: the mean. Rotation: omega = J^-1 sum_a r_a x x_a, the
-      // least-squares rigid rotation, whose nodal motion is omega x r_a
-      // (translations and rotations about the centroid are orthogonal).
-      double mean[3] = {0., 0., 0.}, L[3] = {0., 0., 0.};
-      for (unsigned int a = 0; a < 8; ++a)
-        {
-          for (unsigned int d = 0; d < 3; ++d)
-            mean[d] += x[a][d];
-          L[0] += r[a][1] * x[a][2] - r[a][2] * x[a][1];
-          L[1] += r[a][2] * x[a][0] - r[a][0] * x[a][2];
-          L[2] += r[a][0] * x[a][1] - r[a][1] * x[a][0];
-        }
-      double omega[3];
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          mean[k] *= 0.125;
-          omega[k] = inverse_inertia[k][0] * L[0] +
-                     inverse_inertia[k][1] * L[1] +
-                     inverse_inertia[k][2] * L[2];
-        }
-      for (unsigned int a = 0; a < 8; ++a)
-        {
-          y[a][0] = x[a][0] - mean[0] -
-                    (omega[1] * r[a][2] - omega[2] * r[a][1]);
-          y[a][1] = x[a][1] - mean[1] -
-                    (omega[2] * r[a][0] - omega[0] * r[a][2]);
-          y[a][2] = x[a][2] - mean[2] -
-                    (omega[0] * r[a][1] - omega[1] * r[a][0]);
-        }
-    }
-
-
-
     namespace
     {
       constexpr unsigned int L = 4;
       /** One double per element of a block (GCC vector extension). */
       typedef double Lanes __attribute__((vector_size(L * sizeof(double))));
 
-      template <typename Block>
       inline __attribute__((always_inline)) Lanes
       lanes(const double (&values)[L])
       {
@@ -102,8 +65,10 @@ namespace rubberdyn
         return v;
       }
 
-      // y = P x for the four elements of a block (ScaledElement::
-      // deformation_part(), lane by lane).
+      // y = P x for the four elements of a block: translation, the mean;
+      // rotation, omega = J^-1 sum_a r_a x x_a, the least-squares rigid
+      // rotation, whose nodal motion is omega x r_a (translations and
+      // rotations about the centroid are orthogonal).
       template <typename Block>
       inline __attribute__((always_inline)) void
       deformation_part(const Block &block,
@@ -113,21 +78,21 @@ namespace rubberdyn
         Lanes mean[3] = {}, L_[3] = {};
         for (unsigned int a = 0; a < 8; ++a)
           {
-            const Lanes r0 = lanes<Block>(block.r[a][0]),
-                        r1 = lanes<Block>(block.r[a][1]),
-                        r2 = lanes<Block>(block.r[a][2]);
+            const Lanes r0 = lanes(block.r[a][0]),
+                        r1 = lanes(block.r[a][1]),
+                        r2 = lanes(block.r[a][2]);
             for (unsigned int d = 0; d < 3; ++d)
               mean[d] += x[a][d];
             L_[0] += r1 * x[a][2] - r2 * x[a][1];
             L_[1] += r2 * x[a][0] - r0 * x[a][2];
             L_[2] += r0 * x[a][1] - r1 * x[a][0];
           }
-        const Lanes Jxx = lanes<Block>(block.inverse_inertia[0]),
-                    Jyy = lanes<Block>(block.inverse_inertia[1]),
-                    Jzz = lanes<Block>(block.inverse_inertia[2]),
-                    Jxy = lanes<Block>(block.inverse_inertia[3]),
-                    Jxz = lanes<Block>(block.inverse_inertia[4]),
-                    Jyz = lanes<Block>(block.inverse_inertia[5]);
+        const Lanes Jxx = lanes(block.inverse_inertia[0]),
+                    Jyy = lanes(block.inverse_inertia[1]),
+                    Jzz = lanes(block.inverse_inertia[2]),
+                    Jxy = lanes(block.inverse_inertia[3]),
+                    Jxz = lanes(block.inverse_inertia[4]),
+                    Jyz = lanes(block.inverse_inertia[5]);
         const Lanes w0 = Jxx * L_[0] + Jxy * L_[1] + Jxz * L_[2];
         const Lanes w1 = Jxy * L_[0] + Jyy * L_[1] + Jyz * L_[2];
         const Lanes w2 = Jxz * L_[0] + Jyz * L_[1] + Jzz * L_[2];
@@ -135,9 +100,9 @@ namespace rubberdyn
           mean[d] *= 0.125;
         for (unsigned int a = 0; a < 8; ++a)
           {
-            const Lanes r0 = lanes<Block>(block.r[a][0]),
-                        r1 = lanes<Block>(block.r[a][1]),
-                        r2 = lanes<Block>(block.r[a][2]);
+            const Lanes r0 = lanes(block.r[a][0]),
+                        r1 = lanes(block.r[a][1]),
+                        r2 = lanes(block.r[a][2]);
             y[a][0] = x[a][0] - mean[0] - (w1 * r2 - w2 * r1);
             y[a][1] = x[a][1] - mean[1] - (w2 * r0 - w0 * r2);
             y[a][2] = x[a][2] - mean[2] - (w0 * r1 - w1 * r0);
@@ -176,7 +141,7 @@ namespace rubberdyn
           {
             gather(block, in, x);
             deformation_part(block, x, y);
-            const Lanes beta = lanes<Block>(block.beta);
+            const Lanes beta = lanes(block.beta);
             for (unsigned int a = 0; a < 8; ++a)
               for (unsigned int d = 0; d < 3; ++d)
                 y[a][d] *= beta;
@@ -198,16 +163,16 @@ namespace rubberdyn
             gather(block, in, x);
             for (unsigned int a = 0; a < 8; ++a)
               {
-                const Lanes w = lanes<Block>(block.weight[a]);
+                const Lanes w = lanes(block.weight[a]);
                 for (unsigned int d = 0; d < 3; ++d)
                   x[a][d] *= w;
               }
             deformation_part(block, x, y);
-            const Lanes deformation = lanes<Block>(block.deformation_inverse),
-                        rigid       = lanes<Block>(block.rigid_inverse);
+            const Lanes deformation = lanes(block.deformation_inverse),
+                        rigid       = lanes(block.rigid_inverse);
             for (unsigned int a = 0; a < 8; ++a)
               {
-                const Lanes w = lanes<Block>(block.weight[a]);
+                const Lanes w = lanes(block.weight[a]);
                 for (unsigned int d = 0; d < 3; ++d)
                   y[a][d] = w * (deformation * y[a][d] +
                                  rigid * (x[a][d] - y[a][d]));
@@ -233,7 +198,7 @@ namespace rubberdyn
             for (unsigned int a = 0; a < 8; ++a)
               for (unsigned int d = 0; d < 3; ++d)
                 sum += y[a][d] * y[a][d];
-            sum *= 0.5 * lanes<Block>(block.beta);
+            sum *= 0.5 * lanes(block.beta);
             std::memcpy(energy + L * b, &sum, sizeof(sum));
           }
       }

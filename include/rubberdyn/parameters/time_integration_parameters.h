@@ -136,6 +136,18 @@ namespace rubberdyn
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Refuse a target time @p step (ms) of the entry @p entry that is
+       * longer than the End time: no time step, and arbitrarily much mass
+       * to take it (1e308 ms overflows the added mass to infinity). For the
+       * model-wide targets here and the parts' own.
+       *
+       * @throws InputError naming @p entry.
+       */
+      void
+      require_step_within_run(const std::string &entry,
+                              const double       step) const;
     };
   } // namespace parameters
 } // namespace rubberdyn

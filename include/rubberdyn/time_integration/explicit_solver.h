@@ -680,6 +680,11 @@ namespace rubberdyn
        * before the update and the velocities at t_n (ghosted).
        */
       VectorType acceleration, added_inertia, velocity_before, mean_velocity;
+      /**
+       * Whether some prescribed dof is a node of a scaled element (on any
+       * rank): only then do the reactions need added_inertia.
+       */
+      bool reactions_need_added_mass = false;
     };
   } // namespace time_integration
 } // namespace rubberdyn

@@ -48,14 +48,6 @@ namespace rubberdyn
        */
       void
       set_geometry(const std::array<std::array<double, 3>, 8> &X);
-
-      /**
-       * y = P x: the part of the nodal vector @p x (8 nodes x 3) that is
-       * not a rigid motion of the element (translation or rotation about
-       * its centroid, reference configuration).
-       */
-      void
-      deformation_part(const double x[8][3], double y[8][3]) const;
     };
 
     /**
