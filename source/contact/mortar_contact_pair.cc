@@ -1018,6 +1018,9 @@ namespace rubberdyn
         compute_forces(point, results);
       const auto start = std::chrono::steady_clock::now();
       I.f_pair.compress_finish(VectorOperation::add);
+      I.timings.waiting_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
       I.exchange = Implementation::Exchange::idle;
       for (const unsigned int i : I.owned_surface_dofs)
         f.local_element(i) += I.f_pair.local_element(i);
@@ -1054,7 +1057,11 @@ namespace rubberdyn
     MortarContactPair::Implementation::prepare_evaluation(
       const model::EvaluationPoint &point)
     {
+      const auto start = std::chrono::steady_clock::now();
       u_pair.update_ghost_values_finish();
+      timings.waiting_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
       update_positions(u_pair);
       // (The quasi-static solver has no masses: no stable step there.)
       if (node_mass.empty() && point.mass.linfty_norm() > 0.)

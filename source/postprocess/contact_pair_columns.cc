@@ -150,6 +150,12 @@ namespace rubberdyn
             by_rank += (by_rank.size() > 1 ? ", " : "") + number(seconds);
           entries.emplace_back(names[p] + "_evaluation_seconds_by_rank",
                                by_rank + "]");
+          // Of which waiting for the other ranks (positions, force sums).
+          std::string waiting = "[";
+          for (const double seconds : MPI::all_gather(comm, t.waiting_seconds))
+            waiting += (waiting.size() > 1 ? ", " : "") + number(seconds);
+          entries.emplace_back(names[p] + "_waiting_seconds_by_rank",
+                               waiting + "]");
         }
     }
   } // namespace postprocess

@@ -72,6 +72,11 @@ namespace rubberdyn
       unsigned int searches = 0;
       /** Wall time of the searches and of all evaluations (s). */
       double search_seconds = 0., evaluation_seconds = 0.;
+      /**
+       * The part of evaluation_seconds spent waiting for the other ranks:
+       * for the surfaces' positions and for the forces' sums (s).
+       */
+      double waiting_seconds = 0.;
       /** Candidate master facets after the last search. */
       unsigned long candidates = 0;
     };
