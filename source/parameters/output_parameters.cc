@@ -83,8 +83,10 @@ namespace rubberdyn
       prm.declare_entry("History output interval",
                         "0.05",
                         Patterns::Double(0.),
-                        "Time between rows of time_history.csv (ms); 0 "
-                        "writes every step.");
+                        "Time between rows of time_history.csv (ms), from "
+                        "t = 0; the run's end state has a row too (at or "
+                        "just past the End time: the last step is not "
+                        "shortened). 0 writes every step.");
       prm.declare_entry(
         "History nodes",
         "",

@@ -92,7 +92,9 @@ namespace rubberdyn
     void
     FieldOutputWriter::finish(const SimulationView &view)
     {
-      write(view);
+      // (The end state's after_step() may have written it already.)
+      if (last_output_time != view.time())
+        write(view);
     }
 
 

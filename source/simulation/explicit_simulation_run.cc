@@ -545,6 +545,24 @@ namespace rubberdyn
 
 
 
+    void
+    ExplicitSimulation::monitor_end_state(
+      const postprocess::SimulationView &view,
+      std::ostream                      &log)
+    {
+      const time_integration::ExplicitSolver &s = *explicit_solver;
+      max_energy_error =
+        std::max(max_energy_error, s.energies().absolute_error());
+      deformable_errors.add(s.energies().absolute_error(),
+                            s.energies().largest_deformable);
+      if (last_row_time < s.time())
+        write_history_row(view, log);
+      for (const auto &plugin : postprocessors)
+        plugin->after_step(view);
+    }
+
+
+
     bool
     ExplicitSimulation::advance_to_end(const postprocess::SimulationView &view,
                                        RunProgress       &progress,
@@ -570,6 +588,9 @@ namespace rubberdyn
                   write_checkpoint(history->n_rows(), restarts);
                 }
             }
+          // The state at the end time has its row too (after the last
+          // checkpoint: a continuation writes it again as its first).
+          s.monitor_end_state([&]() { monitor_end_state(view, log); });
         }
       catch (const StopRequested &)
         {

@@ -1321,6 +1321,9 @@ namespace rubberdyn
     ExplicitSolver::run(const double                 end_time,
                         const std::function<void()> &monitor)
     {
+      AssertThrow(!end_state_monitored,
+                  ExcMessage("ExplicitSolver::run() after monitor_end_state(): "
+                             "the velocities are past the end time"));
       if (!started)
         start();
       sums.reinit(bodies.size(),
@@ -1330,41 +1333,7 @@ namespace rubberdyn
       auto clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
-          // Forces at u^n: -f_int + f_contact + f_gravity + loads.
-          lap(clock);
-          evaluate_forces();
-          clock = std::chrono::steady_clock::now();
-          StepWeights w;
-          w.new_step = next_time_step(clock);
-          w.average_step =
-            started ? 0.5 * (last_time_step + w.new_step) : 0.5 * w.new_step;
-          w.old  = started ? 0.5 : 1.;
-          w.next = started ? 0.5 : 0.;
-
-          // The solid's velocities to t_{n+1/2}, the constraints' reactions.
-          advance_velocities(w);
-          apply_constraints(w);
-          if (mass_scaling)
-            add_scaled_kinetic_energy(w);
-          add_shared_dofs_motion(w);
-          timing.vector_updates += lap(clock);
-          sum_over_ranks();
-          timing.communication += lap(clock);
-
-          // The energies at t_n, the bodies to t_{n+1/2}.
-          book_sums(w.new_step);
-          advance_bodies(w);
-          energy.largest_energy =
-            std::max(energy.largest_energy, energy.current_scale());
-          energy.largest_deformable =
-            std::max(energy.largest_deformable, energy.deformable_scale());
-
-          // Output sees the state at t_n and the step about to be taken.
-          last_time_step = w.new_step;
-          lap(clock);
-          monitor();
-          timing.output += lap(clock);
-
+          const StepWeights w = state_at_current_time(clock, monitor);
           advance_displacements(w.new_step);
           for (model::ForceContribution *contribution : contributions)
             contribution->accept_step();
@@ -1377,6 +1346,66 @@ namespace rubberdyn
           ++step_number;
           started = true;
         }
+    }
+
+
+
+    void
+    ExplicitSolver::monitor_end_state(const std::function<void()> &monitor)
+    {
+      AssertThrow(started && !end_state_monitored,
+                  ExcMessage("monitor_end_state() once, after run()"));
+      sums.reinit(bodies.size(),
+                  constraints ? constraints->n_groups() : 0,
+                  settings.n_groups,
+                  shared_dofs.size());
+      auto clock = std::chrono::steady_clock::now();
+      state_at_current_time(clock, monitor);
+      end_state_monitored = true;
+    }
+
+
+
+    ExplicitSolver::StepWeights
+    ExplicitSolver::state_at_current_time(
+      std::chrono::steady_clock::time_point &clock,
+      const std::function<void()>           &monitor)
+    {
+      // Forces at u^n: -f_int + f_contact + f_gravity + loads.
+      lap(clock);
+      evaluate_forces();
+      clock = std::chrono::steady_clock::now();
+      StepWeights w;
+      w.new_step = next_time_step(clock);
+      w.average_step =
+        started ? 0.5 * (last_time_step + w.new_step) : 0.5 * w.new_step;
+      w.old  = started ? 0.5 : 1.;
+      w.next = started ? 0.5 : 0.;
+
+      // The solid's velocities to t_{n+1/2}, the constraints' reactions.
+      advance_velocities(w);
+      apply_constraints(w);
+      if (mass_scaling)
+        add_scaled_kinetic_energy(w);
+      add_shared_dofs_motion(w);
+      timing.vector_updates += lap(clock);
+      sum_over_ranks();
+      timing.communication += lap(clock);
+
+      // The energies at t_n, the bodies to t_{n+1/2}.
+      book_sums(w.new_step);
+      advance_bodies(w);
+      energy.largest_energy =
+        std::max(energy.largest_energy, energy.current_scale());
+      energy.largest_deformable =
+        std::max(energy.largest_deformable, energy.deformable_scale());
+
+      // Output sees the state at t_n and the step about to be taken.
+      last_time_step = w.new_step;
+      lap(clock);
+      monitor();
+      timing.output += lap(clock);
+      return w;
     }
   } // namespace time_integration
 } // namespace rubberdyn

@@ -344,6 +344,15 @@ namespace rubberdyn
                         std::ostream                      &log);
 
       /**
+       * What ExplicitSolver::monitor_end_state() calls once at the end
+       * time: the energy-error records, the last history row (unless the
+       * interval wrote it), the plugins' after_step().
+       */
+      void
+      monitor_end_state(const postprocess::SimulationView &view,
+                        std::ostream                      &log);
+
+      /**
        * What the solver calls after every step: the energy-error records,
        * a history row when due, the plugins' after_step(), a stop asked by
        * a plugin (throws StopRequested after the last row), the progress

@@ -401,6 +401,20 @@ namespace rubberdyn
       run(const double end_time, const std::function<void()> &monitor);
 
       /**
+       * The state at the time run() stopped at, for its last history row:
+       * the forces, reactions and energies at t_N are those of the step
+       * that would follow, so this does that step's first half (forces,
+       * the stable step, the velocities to t_{N+1/2}, the energies at t_N)
+       * and calls @p monitor once, but leaves the displacements and the
+       * time at t_N. Afterwards the velocities are past t_N: run() may
+       * not be called again (it throws), save() is not meaningful.
+       *
+       * @throws SolverFailure as run() does.
+       */
+      void
+      monitor_end_state(const std::function<void()> &monitor);
+
+      /**
        * Time (ms), last step size (ms) and step count. Inside the monitor:
        * the time t_n of the state it sees, the step about to be taken.
        */
@@ -500,6 +514,17 @@ namespace rubberdyn
       {
         double new_step = 0., average_step = 0., old = 0., next = 0.;
       };
+
+      /**
+       * The first half of a step from t_n, which every step and
+       * monitor_end_state() share: forces at u^n, the new stable step, the
+       * velocities to t_{n+1/2} with the constraints' reactions, the sums
+       * over ranks, the energies at t_n and the rigid bodies to t_{n+1/2};
+       * then @p monitor. Returns the step's weights.
+       */
+      StepWeights
+      state_at_current_time(std::chrono::steady_clock::time_point &clock,
+                            const std::function<void()>           &monitor);
 
       /**
        * One step's sums: this rank's terms, and the vector that collective
@@ -651,6 +676,8 @@ namespace rubberdyn
       std::vector<BodyEnergy> body_energy;
       double        total_added_mass = 0., total_physical_mass = 0.;
       bool          started = false;
+      /** monitor_end_state() has run: the velocities are past the time. */
+      bool end_state_monitored = false;
       /** Gravity work of the last displacement update, booked next step. */
       double                      gravity_work_increment = 0.;
       std::vector<double>         reaction;
