@@ -670,18 +670,8 @@ namespace rubberdyn
       add_postprocessor(std::make_unique<postprocess::InteractionEnergyColumns>(
         model, condition_of_group, surface_loads.get(), condition_of_load,
         surfaces));
-      if (!contact_pairs.empty())
-        {
-          names.clear();
-          std::vector<const contact::MortarContactPair *> pairs;
-          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-            {
-              names.push_back(model.contact_pairs[p].name);
-              pairs.push_back(contact_pairs[p].get());
-            }
-          add_postprocessor(std::make_unique<postprocess::ContactPairColumns>(
-            pairs, names, model.comm));
-        }
+      if (auto columns = setup::contact_pair_columns(model, contact_pairs))
+        add_postprocessor(std::move(columns));
       if (!model.pretension_sections.empty())
         {
           names.clear();

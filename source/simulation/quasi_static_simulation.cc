@@ -350,20 +350,8 @@ namespace rubberdyn
           equilibrium_parts,
           newton->rigid_part_poses()));
       // The pairs at the converged state (their last evaluation).
-      if (!contact_pairs.empty())
-        {
-          names.clear();
-          std::vector<const contact::MortarContactPair *> pairs;
-          for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-            {
-              names.push_back(model.contact_pairs[p].name);
-              pairs.push_back(contact_pairs[p].get());
-            }
-          postprocessors.push_back(
-            std::make_unique<postprocess::ContactPairColumns>(pairs,
-                                                              names,
-                                                              model.comm));
-        }
+      if (auto columns = setup::contact_pair_columns(model, contact_pairs))
+        postprocessors.push_back(std::move(columns));
       if (!output.history_nodes.empty())
         postprocessors.push_back(
           std::make_unique<postprocess::HistoryNodeColumns>(

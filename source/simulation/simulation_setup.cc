@@ -9,6 +9,7 @@
 #include <rubberdyn/contact/rigid_surface_contact.h>
 #include <rubberdyn/contact/rigid_surface_forces.h>
 #include <rubberdyn/model/model.h>
+#include <rubberdyn/postprocess/contact_pair_columns.h>
 #include <rubberdyn/simulation/simulation_setup.h>
 #include <rubberdyn/model/surface_loads.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
@@ -447,6 +448,27 @@ namespace rubberdyn
           centre[d] = sums[1 + d] / sums[0];
         return centre;
       }
+    std::unique_ptr<postprocess::Postprocessor>
+    contact_pair_columns(
+      const Model                                                    &model,
+      const std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs)
+    {
+      if (pairs.empty())
+        return nullptr;
+      std::vector<std::string>                         names;
+      std::vector<const contact::MortarContactPair *> views;
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        {
+          names.push_back(model.contact_pairs[p].name);
+          views.push_back(pairs[p].get());
+        }
+      return std::make_unique<postprocess::ContactPairColumns>(views,
+                                                               names,
+                                                               model.comm);
+    }
+
+
+
     } // namespace setup
   }   // namespace simulation
 } // namespace rubberdyn

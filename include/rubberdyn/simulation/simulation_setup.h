@@ -25,6 +25,11 @@ namespace rubberdyn
     class MortarContactPair;
   } // namespace contact
 
+  namespace postprocess
+  {
+    class Postprocessor;
+  } // namespace postprocess
+
   namespace model
   {
     class Model;
@@ -145,6 +150,17 @@ namespace rubberdyn
         const Model                                             &model,
         std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs,
         std::vector<model::ForceContribution *> &contributions);
+
+      /**
+       * The history columns and run_summary.json entries of the mortar
+       * @p pairs (postprocess::ContactPairColumns), each named as the
+       * model's `Contact pairs` entry it came from; nullptr without pairs.
+       * Both schemes write them through it.
+       */
+      std::unique_ptr<postprocess::Postprocessor>
+      contact_pair_columns(
+        const Model                                                    &model,
+        const std::vector<std::unique_ptr<contact::MortarContactPair>> &pairs);
 
       /**
        * The model's initial penetrations (Model::initial_penetrations,
