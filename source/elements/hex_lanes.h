@@ -205,6 +205,20 @@ namespace rubberdyn
               H[r][2] * load<V>(inverse_jacobian[2][c] + first_lane);
       }
 
+      // F = I + H dxi/dX with dxi/dX [k][c] per lane.
+      template <typename V>
+      inline void
+      deformation_gradient(const V H[3][3],
+                           const V inverse_jacobian[3][3],
+                           V       F[3][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int c = 0; c < 3; ++c)
+            F[r][c] = (r == c ? 1. : 0.) + H[r][0] * inverse_jacobian[0][c] +
+                      H[r][1] * inverse_jacobian[1][c] +
+                      H[r][2] * inverse_jacobian[2][c];
+      }
+
       // J = det F and G = F^{-T} = cof(F) / J.
       template <typename V>
       inline void
@@ -224,6 +238,44 @@ namespace rubberdyn
         G[2][0]         = s * (F[0][1] * F[1][2] - F[0][2] * F[1][1]);
         G[2][1]         = s * (F[0][2] * F[1][0] - F[0][0] * F[1][2]);
         G[2][2]         = s * (F[0][0] * F[1][1] - F[0][1] * F[1][0]);
+      }
+
+      // The Jacobians of the map from the reference cube of the lanes
+      // first_lane, ... of a block, from their nodal coordinates X (the
+      // trilinear map, deal.II's MappingQ1 with which
+      // SolidHexElements::initialize() fills HexBlock::inverse_jacobian and
+      // JxW; the same to round-off): dxi/dX [k][c] and det(dX/dxi) at the
+      // Gauss points, and dxi/dX at the centre. Recomputing them costs about
+      // 70 vector operations per element; reading them would stream 80
+      // stored doubles per element from memory, which bounds the kernel's
+      // speed once the mesh outgrows the caches.
+      template <typename V>
+      inline void
+      reference_jacobians(const HexBlock &   block,
+                          const unsigned int first_lane,
+                          V                  inverse_jacobian[internal::n_q][3][3],
+                          V                  determinant[internal::n_q],
+                          V                  inverse_jacobian_centre[3][3])
+      {
+        V X[n_nodes][3];
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            X[a][d] = load<V>(block.X[a][d] + first_lane);
+        V dX[internal::n_q][3][3], dX_centre[3][3];
+        reference_gradients(X, dX, dX_centre);
+        V G[3][3];
+        for (unsigned int q = 0; q < internal::n_q; ++q)
+          {
+            determinant_and_inverse_transpose(dX[q], determinant[q], G);
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int c = 0; c < 3; ++c)
+                inverse_jacobian[q][k][c] = G[c][k];
+          }
+        V det_centre;
+        determinant_and_inverse_transpose(dX_centre, det_centre, G);
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            inverse_jacobian_centre[k][c] = G[c][k];
       }
 
       // Length l of the element step Delta t = l / c (doc/theory.md,

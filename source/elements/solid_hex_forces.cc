@@ -77,6 +77,10 @@ namespace rubberdyn
         // F^{-T} and J = det F at the Gauss points.
         V G[n_q][3][3];
         V J[n_q];
+        // dxi/dX [k][c] and the Gauss weight times det(dX/dxi) at the
+        // Gauss points (lanes_of::reference_jacobians()).
+        V inverse_jacobian[n_q][3][3];
+        V JxW[n_q];
         // F-bar: r_q = J_q / J0 and its minimum over q.
         V volume_ratio[n_q];
         V min_ratio;
@@ -113,22 +117,32 @@ namespace rubberdyn
             for (unsigned int d = 0; d < 3; ++d)
               ue[a][d] += load<V>(context.offsets + (3 * a + d) * L + h);
 
+        // The reference geometry, from X.
+        V inverse_jacobian_centre[3][3];
+        reference_jacobians(block,
+                            h,
+                            kinematics.inverse_jacobian,
+                            kinematics.JxW,
+                            inverse_jacobian_centre);
+        // (QGauss(2) on the unit cube: every weight is 1/8.)
+        for (unsigned int q = 0; q < n_q; ++q)
+          kinematics.JxW[q] *= 0.125;
+
         // Centre: F0, J0, g0_a = F0^{-T} grad_X N_a(centre), volumetric
         // strain rate div v = sum_a v_a . g0_a.
         V H[n_q][3][3], H0[3][3];
         reference_gradients(ue, H, H0);
         V  F0[3][3], G0[3][3];
         V &J0 = kinematics.J0;
-        deformation_gradient(H0, block.inverse_jacobian_centre, F0, h);
+        deformation_gradient(H0, inverse_jacobian_centre, F0);
         determinant_and_inverse_transpose(F0, J0, G0);
         // M0 = G0 (dxi/dX)^T at the centre, so that g0_a = M0 dN_a/dxi.
         V M0[3][3];
         for (unsigned int r = 0; r < 3; ++r)
           for (unsigned int k = 0; k < 3; ++k)
-            M0[r][k] =
-              G0[r][0] * load<V>(block.inverse_jacobian_centre[k][0] + h) +
-              G0[r][1] * load<V>(block.inverse_jacobian_centre[k][1] + h) +
-              G0[r][2] * load<V>(block.inverse_jacobian_centre[k][2] + h);
+            M0[r][k] = G0[r][0] * inverse_jacobian_centre[k][0] +
+                       G0[r][1] * inverse_jacobian_centre[k][1] +
+                       G0[r][2] * inverse_jacobian_centre[k][2];
         V(&g0)[n_nodes][3] = kinematics.g0;
         V volumetric_rate  = {};
         for (unsigned int a = 0; a < n_nodes; ++a)
@@ -147,7 +161,7 @@ namespace rubberdyn
         for (unsigned int q = 0; q < n_q; ++q)
           {
             V F[3][3];
-            deformation_gradient(H[q], block.inverse_jacobian[q], F, h);
+            deformation_gradient(H[q], kinematics.inverse_jacobian[q], F);
             determinant_and_inverse_transpose(F,
                                               kinematics.J[q],
                                               kinematics.G[q]);
@@ -220,13 +234,14 @@ namespace rubberdyn
         const V(&g0)[n_nodes][3] = kinematics.g0;
         const V &J0              = kinematics.J0;
         const V &volumetric_rate = kinematics.volumetric_rate;
+        const V(&inverse_jacobian)[n_q][3][3] = kinematics.inverse_jacobian;
 
         // Energy, current volume, largest wave speed; length scale, bulk
         // viscosity and stable step.
         V element_energy = {}, volume = {}, max_wave_speed = {};
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const V JxW = load<V>(block.JxW[q] + h);
+            const V JxW = kinematics.JxW[q];
             element_energy += load<V>(&energy[q * L + h]) * JxW;
             volume += J[q] * JxW;
             max_wave_speed =
@@ -271,7 +286,7 @@ namespace rubberdyn
                   const V r                 = kinematics.volume_ratio[q];
                   const V inverse_r         = 1. / r;
                   stabilization_pressure[q] = 0.5 * kappa * (r - inverse_r);
-                  element_energy += load<V>(block.JxW[q] + h) *
+                  element_energy += kinematics.JxW[q] *
                                     (0.5 * kappa * (r + inverse_r - 2.));
                 }
               step_wave_speed =
@@ -320,14 +335,10 @@ namespace rubberdyn
                       for (unsigned int c = 0; c < 3; ++c)
                         divergence +=
                           G[q][r][c] *
-                          (Hv[q][r][0] *
-                             load<V>(block.inverse_jacobian[q][0][c] + h) +
-                           Hv[q][r][1] *
-                             load<V>(block.inverse_jacobian[q][1][c] + h) +
-                           Hv[q][r][2] *
-                             load<V>(block.inverse_jacobian[q][2][c] + h));
-                    weighted_divergence +=
-                      load<V>(block.JxW[q] + h) * J[q] * divergence;
+                          (Hv[q][r][0] * inverse_jacobian[q][0][c] +
+                           Hv[q][r][1] * inverse_jacobian[q][1][c] +
+                           Hv[q][r][2] * inverse_jacobian[q][2][c]);
+                    weighted_divergence += kinematics.JxW[q] * J[q] * divergence;
                   }
               }
             store(-bulk_pressure * weighted_divergence,
@@ -349,7 +360,7 @@ namespace rubberdyn
             A[0][1] = A[1][0] = load<V>(&tau[3 * n_points + q * L + h]);
             A[0][2] = A[2][0] = load<V>(&tau[4 * n_points + q * L + h]);
             A[1][2] = A[2][1] = load<V>(&tau[5 * n_points + q * L + h]);
-            const V w = load<V>(block.JxW[q] + h);
+            const V w = kinematics.JxW[q];
             if constexpr (fbar)
               {
                 // (1/3 tr tau - p_stab) replaces 1/3 tr tau: the
@@ -369,10 +380,9 @@ namespace rubberdyn
                                 A[r][2] * G[q][2][k]);
             for (unsigned int r = 0; r < 3; ++r)
               for (unsigned int k = 0; k < 3; ++k)
-                B[q][r][k] =
-                  AG[r][0] * load<V>(block.inverse_jacobian[q][k][0] + h) +
-                  AG[r][1] * load<V>(block.inverse_jacobian[q][k][1] + h) +
-                  AG[r][2] * load<V>(block.inverse_jacobian[q][k][2] + h);
+                B[q][r][k] = AG[r][0] * inverse_jacobian[q][k][0] +
+                             AG[r][1] * inverse_jacobian[q][k][1] +
+                             AG[r][2] * inverse_jacobian[q][k][2];
           }
         V force[n_nodes][3] = {};
         add_reference_divergence(B, force);

@@ -70,16 +70,11 @@ namespace rubberdyn
        */
       struct HexBlock
       {
+        // What the explicit kernel reads, first and together (it streams
+        // the blocks from memory every step).
+
         /** Local indices into the ghosted vectors, [node][component]. */
         unsigned int dofs[n_nodes][3][lanes];
-        /**
-         * Inverse reference Jacobians $\partial\xi_k/\partial X_c$ at the
-         * Gauss points [q][k][c] and at the centre [k][c].
-         */
-        double inverse_jacobian[n_q][3][3][lanes];
-        double inverse_jacobian_centre[3][3][lanes];
-        /** Gauss weights times reference Jacobians (mm^3). */
-        double JxW[n_q][lanes];
         /** Reference nodal coordinates (mm). */
         double X[n_nodes][3][lanes];
         /**
@@ -100,6 +95,19 @@ namespace rubberdyn
          * lanes + l) n_state.
          */
         unsigned int history_offset;
+
+        // The reference geometry at the Gauss points, for the tangent and
+        // output code; the explicit kernel recomputes it from X
+        // (hex_lanes.h, reference_jacobians()).
+
+        /**
+         * Inverse reference Jacobians $\partial\xi_k/\partial X_c$ at the
+         * Gauss points [q][k][c] and at the centre [k][c].
+         */
+        double inverse_jacobian[n_q][3][3][lanes];
+        double inverse_jacobian_centre[3][3][lanes];
+        /** Gauss weights times reference Jacobians (mm^3). */
+        double JxW[n_q][lanes];
       };
     } // namespace internal
 
