@@ -21,6 +21,12 @@
 #include <cmath>
 #include <cstring>
 
+// Every helper below is forced inline: an out-of-line copy of a template
+// would be compiled for the baseline instruction set (and shared between
+// the versions of the kernel), so the AVX2 version would call an SSE2
+// function (seen: reference_jacobians, +45 % instructions).
+#define RUBBERDYN_LANES_INLINE inline __attribute__((always_inline))
+
 namespace rubberdyn
 {
   namespace elements
@@ -47,7 +53,7 @@ namespace rubberdyn
 
       // Unaligned loads and stores of width<V> consecutive doubles.
       template <typename V = Lanes>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       load(const double *values)
       {
         V v;
@@ -56,28 +62,28 @@ namespace rubberdyn
       }
 
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       store(const V &v, double *values)
       {
         std::memcpy(values, &v, sizeof(v));
       }
 
       template <typename V = Lanes>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       broadcast(const double x)
       {
         return V{} + x;
       }
 
       template <typename V>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       max(const V &a, const V &b)
       {
         return a > b ? a : b;
       }
 
       template <typename V>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       sqrt(const V &x)
       {
         V y;
@@ -89,7 +95,7 @@ namespace rubberdyn
       // Values of a ghosted vector at the nodes of the elements of lanes
       // first_lane, ..., first_lane + width<V> - 1 of the block.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       gather(const HexBlock &   block,
              const unsigned int first_lane,
              const double *     vector,
@@ -128,7 +134,7 @@ namespace rubberdyn
       // Reference gradients H[r][k] = sum_a u_a[r] dN_a/dxi_k of the nodal
       // field u at the 8 Gauss points and at the centre.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       reference_gradients(const V u[n_nodes][3],
                           V       H[internal::n_q][3][3],
                           V       H_centre[3][3])
@@ -160,7 +166,7 @@ namespace rubberdyn
 
       // The transpose: f_a[r] += sum_q sum_k B_q[r][k] dN_a/dxi_k(q).
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       add_reference_divergence(const V B[internal::n_q][3][3],
                                V       f[n_nodes][3])
       {
@@ -190,7 +196,7 @@ namespace rubberdyn
 
       // F = I + H dxi/dX, dxi/dX of the lanes from first_lane on.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       deformation_gradient(const V            H[3][3],
                            const double       inverse_jacobian[3][3][L],
                            V                  F[3][3],
@@ -207,7 +213,7 @@ namespace rubberdyn
 
       // F = I + H dxi/dX with dxi/dX [k][c] per lane.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       deformation_gradient(const V H[3][3],
                            const V inverse_jacobian[3][3],
                            V       F[3][3])
@@ -221,7 +227,7 @@ namespace rubberdyn
 
       // J = det F and G = F^{-T} = cof(F) / J.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       determinant_and_inverse_transpose(const V F[3][3], V &J, V G[3][3])
       {
         const V c00 = F[1][1] * F[2][2] - F[1][2] * F[2][1];
@@ -250,7 +256,7 @@ namespace rubberdyn
       // stored doubles per element from memory, which bounds the kernel's
       // speed once the mesh outgrows the caches.
       template <typename V>
-      inline void
+      RUBBERDYN_LANES_INLINE void
       reference_jacobians(const HexBlock &   block,
                           const unsigned int first_lane,
                           V                  inverse_jacobian[internal::n_q][3][3],
@@ -291,7 +297,7 @@ namespace rubberdyn
       // A_2^2 + A_3^2) with A_i the areas of its three face pairs: h / sqrt3
       // for a cube of side h, whose breathing mode attains the bound.
       template <typename V>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       characteristic_length(const V            g0[n_nodes][3],
                             const double       inverse_mass_fraction[n_nodes][L],
                             const unsigned int first_lane = 0)
@@ -306,7 +312,7 @@ namespace rubberdyn
 
       // x^(-1/3) per lane, as simd_math::inverse_cube_root.
       template <typename V>
-      inline V
+      RUBBERDYN_LANES_INLINE V
       inverse_cube_root(const V &x)
       {
         typedef float Floats
