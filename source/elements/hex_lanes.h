@@ -252,9 +252,10 @@ namespace rubberdyn
       // SolidHexElements::initialize() fills HexBlock::inverse_jacobian and
       // JxW; the same to round-off): dxi/dX [k][c] and det(dX/dxi) at the
       // Gauss points, and dxi/dX at the centre. Recomputing them costs about
-      // 70 vector operations per element; reading them would stream 80
-      // stored doubles per element from memory, which bounds the kernel's
-      // speed once the mesh outgrows the caches.
+      // 220 instructions per element in the AVX2 version (callgrind; 9
+      // inversions of 3x3 matrices); reading them would stream 89 stored
+      // doubles per element from memory, which bounded the kernel's speed
+      // once the mesh outgrew the caches (benchmarks/README.md).
       template <typename V>
       RUBBERDYN_LANES_INLINE void
       reference_jacobians(const HexBlock &   block,

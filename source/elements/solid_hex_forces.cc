@@ -212,6 +212,45 @@ namespace rubberdyn
 
 
 
+      // The displacement element's sum_q w_q J_q div_q v (the power of its
+      // bulk viscosity over -q), div_q v = (dv/dxi dxi/dX) : F^{-T}; 0 where
+      // no lane of the chunk compresses (bulk_pressure = 0), without
+      // gathering v.
+      template <typename V>
+      inline __attribute__((always_inline)) V
+      weighted_divergence(const HexBlock &          block,
+                          const BlockContext &      context,
+                          const unsigned int        first_lane,
+                          const V &                 bulk_pressure,
+                          const ChunkKinematics<V> &kinematics)
+      {
+        using namespace lanes_of;
+        bool any_compressing = false;
+        for (unsigned int l = 0; l < width<V>; ++l)
+          any_compressing |= (bulk_pressure[l] != 0.);
+        V sum = {};
+        if (!any_compressing)
+          return sum;
+        V ve[n_nodes][3], Hv[n_q][3][3], Hv0[3][3];
+        gather(block, first_lane, context.v, ve);
+        reference_gradients(ve, Hv, Hv0);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const V(&inverse_jacobian)[3][3] = kinematics.inverse_jacobian[q];
+            V divergence                     = {};
+            for (unsigned int r = 0; r < 3; ++r)
+              for (unsigned int c = 0; c < 3; ++c)
+                divergence += kinematics.G[q][r][c] *
+                              (Hv[q][r][0] * inverse_jacobian[0][c] +
+                               Hv[q][r][1] * inverse_jacobian[1][c] +
+                               Hv[q][r][2] * inverse_jacobian[2][c]);
+            sum += kinematics.JxW[q] * kinematics.J[q] * divergence;
+          }
+        return sum;
+      }
+
+
+
       // Pass 2 on the lanes of pass 1, after the law (tau, energy and wave
       // speed in its layout): energy, bulk viscosity, stable step and
       // forces into result.
@@ -318,32 +357,10 @@ namespace rubberdyn
           store(bulk_pressure * rate * volume,
                 result.bulk_viscosity_power + h);
         else
-          {
-            bool any_compressing = false;
-            for (unsigned int l = 0; l < width<V>; ++l)
-              any_compressing |= (bulk_pressure[l] != 0.);
-            V weighted_divergence = {};
-            if (any_compressing)
-              {
-                V ve[n_nodes][3], Hv[n_q][3][3], Hv0[3][3];
-                gather(block, h, context.v, ve);
-                reference_gradients(ve, Hv, Hv0);
-                for (unsigned int q = 0; q < n_q; ++q)
-                  {
-                    V divergence = {};
-                    for (unsigned int r = 0; r < 3; ++r)
-                      for (unsigned int c = 0; c < 3; ++c)
-                        divergence +=
-                          G[q][r][c] *
-                          (Hv[q][r][0] * inverse_jacobian[q][0][c] +
-                           Hv[q][r][1] * inverse_jacobian[q][1][c] +
-                           Hv[q][r][2] * inverse_jacobian[q][2][c]);
-                    weighted_divergence += kinematics.JxW[q] * J[q] * divergence;
-                  }
-              }
-            store(-bulk_pressure * weighted_divergence,
-                  result.bulk_viscosity_power + h);
-          }
+          store(-bulk_pressure * weighted_divergence(block, context, h,
+                                                     bulk_pressure,
+                                                     kinematics),
+                result.bulk_viscosity_power + h);
 
         // Forces f_a = sum_q B_q dN_a/dxi(q) + S g0_a (see the class
         // documentation); 1/3 of the trace and S with F-bar only.
