@@ -2,11 +2,17 @@
 #define rubberdyn_source_elements_hex_lanes_h
 
 // Kinematics of a block of hexahedra, one element per SIMD lane (private to
-// source/elements). Written with GCC's vector extensions: a `Lanes` value
-// holds one double per element of the block, and arithmetic on it is one
-// AVX2 instruction (two SSE2 instructions in the baseline clone). This is
-// explicit on purpose: GCC's auto-vectoriser unrolls 4-trip lane loops
-// before it looks at them and then vectorises some and not others.
+// source/elements). Written with GCC's vector extensions: a vector of W
+// doubles (VectorOf<W>::type) holds one double per element of W lanes of
+// the block, and arithmetic on it is one instruction where the CPU has
+// W-wide registers. The hot loop takes a block in chunks of the clone's
+// native width (solid_hex_forces.cc: 8 lanes with AVX-512, 4 with AVX2),
+// since a vector wider than the registers is lowered by GCC into moves
+// through memory (+50 % instructions for 8 lanes on AVX2). The functions
+// below take the vector type as a template argument and, where they read
+// a block's [...][lanes] arrays, the chunk's first lane. This is explicit
+// on purpose: GCC's auto-vectoriser unrolls short lane loops before it
+// looks at them and then vectorises some and not others.
 
 #include <rubberdyn/base/simd_math.h>
 #include <rubberdyn/elements/solid_hex_elements.h>
@@ -14,6 +20,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+// Every helper below is forced inline: an out-of-line copy of a template
+// would be compiled for the baseline instruction set (and shared between
+// the versions of the kernel), so the AVX2 version would call an SSE2
+// function (seen: reference_jacobians, +45 % instructions).
+#define RUBBERDYN_LANES_INLINE inline __attribute__((always_inline))
 
 namespace rubberdyn
 {
@@ -25,53 +37,74 @@ namespace rubberdyn
       using internal::n_nodes;
       constexpr unsigned int L = internal::lanes;
 
-      /** One double per lane. */
-      typedef double Lanes __attribute__((vector_size(L * sizeof(double))));
+      /** W doubles, one per lane of a chunk of W lanes. */
+      template <unsigned int W>
+      struct VectorOf
+      {
+        typedef double type __attribute__((vector_size(W * sizeof(double))));
+      };
 
-      // Unaligned loads and stores of L consecutive doubles.
-      inline Lanes
+      /** One double per lane of a whole block (set-up and output code). */
+      typedef VectorOf<L>::type Lanes;
+
+      /** The number of lanes of the vector type V. */
+      template <typename V>
+      constexpr unsigned int width = sizeof(V) / sizeof(double);
+
+      // Unaligned loads and stores of width<V> consecutive doubles.
+      template <typename V = Lanes>
+      RUBBERDYN_LANES_INLINE V
       load(const double *values)
       {
-        Lanes v;
+        V v;
         std::memcpy(&v, values, sizeof(v));
         return v;
       }
 
-      inline void
-      store(const Lanes &v, double *values)
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      store(const V &v, double *values)
       {
         std::memcpy(values, &v, sizeof(v));
       }
 
-      inline Lanes
+      template <typename V = Lanes>
+      RUBBERDYN_LANES_INLINE V
       broadcast(const double x)
       {
-        return Lanes{} + x;
+        return V{} + x;
       }
 
-      inline Lanes
-      max(const Lanes &a, const Lanes &b)
+      template <typename V>
+      RUBBERDYN_LANES_INLINE V
+      max(const V &a, const V &b)
       {
         return a > b ? a : b;
       }
 
-      inline Lanes
-      sqrt(const Lanes &x)
+      template <typename V>
+      RUBBERDYN_LANES_INLINE V
+      sqrt(const V &x)
       {
-        Lanes y;
-        for (unsigned int l = 0; l < L; ++l)
+        V y;
+        for (unsigned int l = 0; l < width<V>; ++l)
           y[l] = std::sqrt(x[l]);
         return y;
       }
 
-      // Values of a ghosted vector at the nodes of the block's elements.
-      inline void
-      gather(const HexBlock &block, const double *vector, Lanes values[n_nodes][3])
+      // Values of a ghosted vector at the nodes of the elements of lanes
+      // first_lane, ..., first_lane + width<V> - 1 of the block.
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      gather(const HexBlock &   block,
+             const unsigned int first_lane,
+             const double *     vector,
+             V                  values[n_nodes][3])
       {
         for (unsigned int a = 0; a < n_nodes; ++a)
           for (unsigned int d = 0; d < 3; ++d)
-            for (unsigned int l = 0; l < L; ++l)
-              values[a][d][l] = vector[block.dofs[a][d][l]];
+            for (unsigned int l = 0; l < width<V>; ++l)
+              values[a][d][l] = vector[block.dofs[a][d][first_lane + l]];
       }
 
       // Sum factorisation on the reference cube [0,1]^3 with deal.II's
@@ -100,21 +133,22 @@ namespace rubberdyn
 
       // Reference gradients H[r][k] = sum_a u_a[r] dN_a/dxi_k of the nodal
       // field u at the 8 Gauss points and at the centre.
-      inline void
-      reference_gradients(const Lanes u[n_nodes][3],
-                          Lanes       H[internal::n_q][3][3],
-                          Lanes       H_centre[3][3])
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      reference_gradients(const V u[n_nodes][3],
+                          V       H[internal::n_q][3][3],
+                          V       H_centre[3][3])
       {
         for (unsigned int r = 0; r < 3; ++r)
           for (unsigned int k = 0; k < 3; ++k)
             {
-              Lanes D[2][2];
+              V D[2][2];
               for (unsigned int bp = 0; bp < 2; ++bp)
                 for (unsigned int bs = 0; bs < 2; ++bs)
                   D[bp][bs] =
                     u[corner(k, 1, bp, bs)][r] - u[corner(k, 0, bp, bs)][r];
               H_centre[r][k] = 0.25 * (D[0][0] + D[0][1] + D[1][0] + D[1][1]);
-              Lanes T[2][2];
+              V T[2][2];
               for (unsigned int bp = 0; bp < 2; ++bp)
                 for (unsigned int ms = 0; ms < 2; ++ms)
                   T[bp][ms] = phi_at_gauss[ms][0] * D[bp][0] +
@@ -122,7 +156,7 @@ namespace rubberdyn
               for (unsigned int mp = 0; mp < 2; ++mp)
                 for (unsigned int ms = 0; ms < 2; ++ms)
                   {
-                    const Lanes value = phi_at_gauss[mp][0] * T[0][ms] +
+                    const V value = phi_at_gauss[mp][0] * T[0][ms] +
                                         phi_at_gauss[mp][1] * T[1][ms];
                     H[corner(k, 0, mp, ms)][r][k] = value;
                     H[corner(k, 1, mp, ms)][r][k] = value;
@@ -131,19 +165,20 @@ namespace rubberdyn
       }
 
       // The transpose: f_a[r] += sum_q sum_k B_q[r][k] dN_a/dxi_k(q).
-      inline void
-      add_reference_divergence(const Lanes B[internal::n_q][3][3],
-                               Lanes       f[n_nodes][3])
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      add_reference_divergence(const V B[internal::n_q][3][3],
+                               V       f[n_nodes][3])
       {
         for (unsigned int r = 0; r < 3; ++r)
           for (unsigned int k = 0; k < 3; ++k)
             {
-              Lanes P[2][2];
+              V P[2][2];
               for (unsigned int mp = 0; mp < 2; ++mp)
                 for (unsigned int ms = 0; ms < 2; ++ms)
                   P[mp][ms] = B[corner(k, 0, mp, ms)][r][k] +
                               B[corner(k, 1, mp, ms)][r][k];
-              Lanes T[2][2];
+              V T[2][2];
               for (unsigned int mp = 0; mp < 2; ++mp)
                 for (unsigned int bs = 0; bs < 2; ++bs)
                   T[mp][bs] = phi_at_gauss[0][bs] * P[mp][0] +
@@ -151,7 +186,7 @@ namespace rubberdyn
               for (unsigned int bp = 0; bp < 2; ++bp)
                 for (unsigned int bs = 0; bs < 2; ++bs)
                   {
-                    const Lanes E = phi_at_gauss[0][bp] * T[0][bs] +
+                    const V E = phi_at_gauss[0][bp] * T[0][bs] +
                                     phi_at_gauss[1][bp] * T[1][bs];
                     f[corner(k, 1, bp, bs)][r] += E;
                     f[corner(k, 0, bp, bs)][r] -= E;
@@ -159,29 +194,47 @@ namespace rubberdyn
             }
       }
 
-      // F = I + H dxi/dX.
-      inline void
-      deformation_gradient(const Lanes  H[3][3],
-                           const double inverse_jacobian[3][3][L],
-                           Lanes        F[3][3])
+      // F = I + H dxi/dX, dxi/dX of the lanes from first_lane on.
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      deformation_gradient(const V            H[3][3],
+                           const double       inverse_jacobian[3][3][L],
+                           V                  F[3][3],
+                           const unsigned int first_lane = 0)
       {
         for (unsigned int r = 0; r < 3; ++r)
           for (unsigned int c = 0; c < 3; ++c)
-            F[r][c] = (r == c ? 1. : 0.) +
-                      H[r][0] * load(inverse_jacobian[0][c]) +
-                      H[r][1] * load(inverse_jacobian[1][c]) +
-                      H[r][2] * load(inverse_jacobian[2][c]);
+            F[r][c] =
+              (r == c ? 1. : 0.) +
+              H[r][0] * load<V>(inverse_jacobian[0][c] + first_lane) +
+              H[r][1] * load<V>(inverse_jacobian[1][c] + first_lane) +
+              H[r][2] * load<V>(inverse_jacobian[2][c] + first_lane);
+      }
+
+      // F = I + H dxi/dX with dxi/dX [k][c] per lane.
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      deformation_gradient(const V H[3][3],
+                           const V inverse_jacobian[3][3],
+                           V       F[3][3])
+      {
+        for (unsigned int r = 0; r < 3; ++r)
+          for (unsigned int c = 0; c < 3; ++c)
+            F[r][c] = (r == c ? 1. : 0.) + H[r][0] * inverse_jacobian[0][c] +
+                      H[r][1] * inverse_jacobian[1][c] +
+                      H[r][2] * inverse_jacobian[2][c];
       }
 
       // J = det F and G = F^{-T} = cof(F) / J.
-      inline void
-      determinant_and_inverse_transpose(const Lanes F[3][3], Lanes &J, Lanes G[3][3])
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      determinant_and_inverse_transpose(const V F[3][3], V &J, V G[3][3])
       {
-        const Lanes c00 = F[1][1] * F[2][2] - F[1][2] * F[2][1];
-        const Lanes c01 = F[1][2] * F[2][0] - F[1][0] * F[2][2];
-        const Lanes c02 = F[1][0] * F[2][1] - F[1][1] * F[2][0];
-        J               = F[0][0] * c00 + F[0][1] * c01 + F[0][2] * c02;
-        const Lanes s   = 1. / J;
+        const V c00 = F[1][1] * F[2][2] - F[1][2] * F[2][1];
+        const V c01 = F[1][2] * F[2][0] - F[1][0] * F[2][2];
+        const V c02 = F[1][0] * F[2][1] - F[1][1] * F[2][0];
+        J           = F[0][0] * c00 + F[0][1] * c01 + F[0][2] * c02;
+        const V s   = 1. / J;
         G[0][0]         = s * c00;
         G[0][1]         = s * c01;
         G[0][2]         = s * c02;
@@ -191,6 +244,45 @@ namespace rubberdyn
         G[2][0]         = s * (F[0][1] * F[1][2] - F[0][2] * F[1][1]);
         G[2][1]         = s * (F[0][2] * F[1][0] - F[0][0] * F[1][2]);
         G[2][2]         = s * (F[0][0] * F[1][1] - F[0][1] * F[1][0]);
+      }
+
+      // The Jacobians of the map from the reference cube of the lanes
+      // first_lane, ... of a block, from their nodal coordinates X (the
+      // trilinear map, deal.II's MappingQ1 with which
+      // SolidHexElements::initialize() fills HexBlock::inverse_jacobian and
+      // JxW; the same to round-off): dxi/dX [k][c] and det(dX/dxi) at the
+      // Gauss points, and dxi/dX at the centre. Recomputing them costs about
+      // 220 instructions per element in the AVX2 version (callgrind; 9
+      // inversions of 3x3 matrices); reading them would stream 89 stored
+      // doubles per element from memory, which bounded the kernel's speed
+      // once the mesh outgrew the caches (benchmarks/README.md).
+      template <typename V>
+      RUBBERDYN_LANES_INLINE void
+      reference_jacobians(const HexBlock &   block,
+                          const unsigned int first_lane,
+                          V                  inverse_jacobian[internal::n_q][3][3],
+                          V                  determinant[internal::n_q],
+                          V                  inverse_jacobian_centre[3][3])
+      {
+        V X[n_nodes][3];
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            X[a][d] = load<V>(block.X[a][d] + first_lane);
+        V dX[internal::n_q][3][3], dX_centre[3][3];
+        reference_gradients(X, dX, dX_centre);
+        V G[3][3];
+        for (unsigned int q = 0; q < internal::n_q; ++q)
+          {
+            determinant_and_inverse_transpose(dX[q], determinant[q], G);
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int c = 0; c < 3; ++c)
+                inverse_jacobian[q][k][c] = G[c][k];
+          }
+        V det_centre;
+        determinant_and_inverse_transpose(dX_centre, det_centre, G);
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            inverse_jacobian_centre[k][c] = G[c][k];
       }
 
       // Length l of the element step Delta t = l / c (doc/theory.md,
@@ -205,32 +297,36 @@ namespace rubberdyn
       // 1 / mu_a. For a parallelepiped (mu_a = 1/8) l = V / sqrt(A_1^2 +
       // A_2^2 + A_3^2) with A_i the areas of its three face pairs: h / sqrt3
       // for a cube of side h, whose breathing mode attains the bound.
-      inline Lanes
-      characteristic_length(const Lanes  g0[n_nodes][3],
-                            const double inverse_mass_fraction[n_nodes][L])
+      template <typename V>
+      RUBBERDYN_LANES_INLINE V
+      characteristic_length(const V            g0[n_nodes][3],
+                            const double       inverse_mass_fraction[n_nodes][L],
+                            const unsigned int first_lane = 0)
       {
-        Lanes sum = {};
+        V sum = {};
         for (unsigned int a = 0; a < n_nodes; ++a)
-          sum += load(inverse_mass_fraction[a]) *
+          sum += load<V>(inverse_mass_fraction[a] + first_lane) *
                  (g0[a][0] * g0[a][0] + g0[a][1] * g0[a][1] +
                   g0[a][2] * g0[a][2]);
         return 2. / sqrt(sum);
       }
 
       // x^(-1/3) per lane, as simd_math::inverse_cube_root.
-      inline Lanes
-      inverse_cube_root(const Lanes &x)
+      template <typename V>
+      RUBBERDYN_LANES_INLINE V
+      inverse_cube_root(const V &x)
       {
-        typedef float Floats __attribute__((vector_size(L * sizeof(float))));
+        typedef float Floats
+          __attribute__((vector_size(width<V> * sizeof(float))));
         typedef std::int32_t Ints
-          __attribute__((vector_size(L * sizeof(std::int32_t))));
+          __attribute__((vector_size(width<V> * sizeof(std::int32_t))));
         const Floats x_float = __builtin_convertvector(x, Floats);
         Ints         bits;
         std::memcpy(&bits, &x_float, sizeof(bits));
         bits = simd_math::inverse_cube_root_magic - bits / 3;
         Floats y_float;
         std::memcpy(&y_float, &bits, sizeof(bits));
-        Lanes y = __builtin_convertvector(y_float, Lanes);
+        V y = __builtin_convertvector(y_float, V);
         for (unsigned int k = 0; k < simd_math::inverse_cube_root_newton_steps;
              ++k)
           y = y * (4. - x * (y * y * y)) * (1. / 3.);

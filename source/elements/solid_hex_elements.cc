@@ -530,7 +530,7 @@ namespace rubberdyn
           const unsigned int n_state = law.n_state_variables();
           scratch.resize(n_state);
           lanes_of::Lanes ue[n_nodes][3], F0[3][3], G[3][3], J0;
-          lanes_of::gather(block, u.begin(), ue);
+          lanes_of::gather(block, 0, u.begin(), ue);
           double offsets[n_nodes][3][lanes];
           if (block_offsets(&block - blocks.data(), offsets))
             for (unsigned int a = 0; a < n_nodes; ++a)

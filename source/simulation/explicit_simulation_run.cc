@@ -45,7 +45,9 @@ namespace rubberdyn
       struct StopRequested
       {};
 
-      constexpr char rank_file_magic[8] = "RDYNRK2";
+      // (3: the material history in blocks of 8 elements, internal::lanes,
+      // instead of 4: an older file would be read in the wrong order.)
+      constexpr char rank_file_magic[8] = "RDYNRK3";
 
       using durable_files::sync_directory;
       using durable_files::throw_if_any;

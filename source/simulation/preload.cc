@@ -20,8 +20,9 @@ namespace rubberdyn
     namespace
     {
       // (2: with the contacts' friction states; 3: with the poses of the
-      // rigid parts in equilibrium.)
-      constexpr char preload_magic[8] = "RDYNPL3";
+      // rigid parts in equilibrium; 4: the material history in blocks of 8
+      // elements, internal::lanes, instead of 4.)
+      constexpr char preload_magic[8] = "RDYNPL4";
       /** Doubles per rigid part pose: part, centre, displacement, R. */
       constexpr unsigned int pose_size = 16;
 

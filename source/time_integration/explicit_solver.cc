@@ -219,6 +219,10 @@ namespace rubberdyn
 
 
 
+    ExplicitSolver::~ExplicitSolver() = default;
+
+
+
     void
     ExplicitSolver::set_initial_velocity(const Tensor<1, 3> &velocity)
     {

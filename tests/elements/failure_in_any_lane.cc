@@ -1,10 +1,11 @@
 // An element that inverts is reported with its own cell, whatever its lane:
-// a row of 7 cells of 1 mm makes one full block (lanes 0-3) and one block
-// of 3 elements plus a padding lane. For each cell in turn, the nodes of
+// a row of 2 L - 1 cells of 1 mm (L = internal::lanes, 8) makes one full
+// block (lanes 0 to L-1) and one block of L - 1 elements plus a padding
+// lane. For each cell in turn, the nodes of
 // its face x = c + 1 are pushed back by 1.5 mm, past its other face:
 // that cell inverts, its right neighbour only stretches. The failure must
 // name that cell (its id and reference centre), for both formulations,
-// lanes 0-3 of the full block and lanes 0-2 of the partly filled one; no
+// every lane of the full block and of the partly filled one; no
 // other element may be reported, and the elements of the other block still
 // contribute their forces. The kernel masks padding lanes itself (they
 // see F = I in the law) instead of relying on their copying lane 0.
@@ -18,6 +19,8 @@
 #include <rubberdyn/elements/solid_hex_elements.h>
 #include <rubberdyn/materials/elastic.h>
 
+#include <string>
+
 #include "../tests.h"
 
 using namespace dealii;
@@ -29,7 +32,8 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int               n_cells = 7;
+  constexpr unsigned int           lanes   = elements::internal::lanes;
+  const unsigned int               n_cells = 2 * lanes - 1;
   Triangulation<3>                 tria;
   GridGenerator::subdivided_hyper_rectangle(tria,
                                             {n_cells, 1, 1},
@@ -92,8 +96,11 @@ main(int argc, char **argv)
           out() << (formulation == elements::Formulation::fbar ?
                       "F-bar" :
                       "displacement")
-                << ", cell " << c << " (block " << c / 4 << ", lane " << c % 4
-                << (c / 4 == 1 ? ", block of 3" : "")
+                << ", cell " << c << " (block " << c / lanes << ", lane "
+                << c % lanes
+                << (c / lanes == 1 ?
+                      ", block of " + std::to_string(lanes - 1) :
+                      std::string())
                 << ") inverted: reported " << result.failure.cell_id << " at "
                 << result.failure.position << ": "
                 << result.failure.message << "; right cell: "

@@ -5,15 +5,21 @@
 #include <cstring>
 
 /**
- * On x86-64 with GCC, compile the marked function twice, for AVX2 + FMA
- * (x86-64-v3) and for the baseline, and pick one at load time: the
- * hot loops get 4-wide vectors without building the whole code for a
- * particular CPU.
+ * On x86-64 with GCC, compile the marked function three times, for
+ * AVX-512 (x86-64-v4: F, BW, CD, DQ, VL), for AVX2 + FMA (x86-64-v3) and
+ * for the baseline, and pick one at load time (an ifunc resolver asks
+ * the CPU): the hot loops get 8-wide vectors on CPUs that have them
+ * without building the whole code for a particular CPU. The clones may
+ * differ in the last bits (FMA contraction), never more.
  */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#  define RUBBERDYN_VECTOR_CLONES \
-    __attribute__((target_clones("arch=x86-64-v3", "default")))
+#  define RUBBERDYN_VECTOR_CLONES                                  \
+    __attribute__((                                               \
+      target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+/** Whether the CPU picks one of several versions at load time. */
+#  define RUBBERDYN_HAVE_VECTOR_CLONES 1
 #else
+#  define RUBBERDYN_HAVE_VECTOR_CLONES 0
 #  define RUBBERDYN_VECTOR_CLONES
 #endif
 

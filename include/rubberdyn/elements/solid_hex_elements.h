@@ -44,9 +44,10 @@ namespace rubberdyn
       /**
        * Elements evaluated together, one per SIMD lane: the hot loops run
        * over lanes innermost, so that GCC turns them into vector
-       * instructions (4 doubles with AVX2).
+       * instructions (one AVX-512 instruction on 8 doubles; two AVX2 or
+       * four SSE2 instructions in the other clones, RUBBERDYN_VECTOR_CLONES).
        */
-      constexpr unsigned int lanes = 4;
+      constexpr unsigned int lanes = 8;
 
       /**
        * Shape functions on the reference cell $[0,1]^3$ (the same for every
@@ -69,16 +70,11 @@ namespace rubberdyn
        */
       struct HexBlock
       {
+        // What the explicit kernel reads, first and together (it streams
+        // the blocks from memory every step).
+
         /** Local indices into the ghosted vectors, [node][component]. */
         unsigned int dofs[n_nodes][3][lanes];
-        /**
-         * Inverse reference Jacobians $\partial\xi_k/\partial X_c$ at the
-         * Gauss points [q][k][c] and at the centre [k][c].
-         */
-        double inverse_jacobian[n_q][3][3][lanes];
-        double inverse_jacobian_centre[3][3][lanes];
-        /** Gauss weights times reference Jacobians (mm^3). */
-        double JxW[n_q][lanes];
         /** Reference nodal coordinates (mm). */
         double X[n_nodes][3][lanes];
         /**
@@ -99,6 +95,19 @@ namespace rubberdyn
          * lanes + l) n_state.
          */
         unsigned int history_offset;
+
+        // The reference geometry at the Gauss points, for the tangent and
+        // output code; the explicit kernel recomputes it from X
+        // (hex_lanes.h, reference_jacobians()).
+
+        /**
+         * Inverse reference Jacobians $\partial\xi_k/\partial X_c$ at the
+         * Gauss points [q][k][c] and at the centre [k][c].
+         */
+        double inverse_jacobian[n_q][3][3][lanes];
+        double inverse_jacobian_centre[3][3][lanes];
+        /** Gauss weights times reference Jacobians (mm^3). */
+        double JxW[n_q][lanes];
       };
     } // namespace internal
 
@@ -310,7 +319,7 @@ namespace rubberdyn
      * \mathrm{tr}\bar\tau$, so only the reference-cell gradients
      * $\hat\nabla N_a$ (the same for every element) and the inverse
      * reference Jacobians are stored; no FEValues is touched per step.
-     * Elements are evaluated four at a time (internal::HexBlock), and the
+     * Elements are evaluated eight at a time (internal::HexBlock), and the
      * law through its batched materials::StressKernel.
      *
      * Bulk viscosity (LS-DYNA style): in compression a pressure

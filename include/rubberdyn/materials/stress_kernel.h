@@ -27,8 +27,8 @@ namespace rubberdyn
     class StressKernel
     {
     public:
-      /** Points per batch: the 8 Gauss points of 4 hexahedra. */
-      static constexpr unsigned int batch_size = 32;
+      /** Points per batch: the 8 Gauss points of 8 hexahedra. */
+      static constexpr unsigned int batch_size = 64;
 
       virtual ~StressKernel() = default;
 

@@ -13,8 +13,8 @@ namespace rubberdyn
     /**
      * Batched Yeoh law (no history) for the explicit elements: the same
      * formulas as Yeoh::evaluate() without the tangent, written as one loop
-     * over points with scalar arithmetic only, which GCC vectorises (4 points
-     * per instruction with AVX2). $J^{-2/3}$ comes from
+     * over points with scalar arithmetic only, which GCC vectorises (8 points
+     * per instruction with AVX-512, 4 with AVX2). $J^{-2/3}$ comes from
      * simd_math::inverse_cube_root instead of std::pow, and $\ln J$ (for
      * the logarithmic volumetric functions) from simd_math::natural_log
      * instead of std::log. The loop is compiled once per volumetric

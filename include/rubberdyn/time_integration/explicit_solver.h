@@ -333,6 +333,12 @@ namespace rubberdyn
         const ExplicitSettings &                          settings,
         const MPI_Comm                                    comm);
 
+      /**
+       * Out of line: the owned SelectiveMassScaling is an incomplete type
+       * here, so users that only include this header can destroy a solver.
+       */
+      ~ExplicitSolver();
+
       /** Set a uniform initial velocity of the solid (mm/ms). */
       void
       set_initial_velocity(const Tensor<1, 3> &velocity);
