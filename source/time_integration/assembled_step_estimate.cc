@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -19,10 +18,12 @@ namespace rubberdyn
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
       const VectorType                                         &inverse_mass,
       const std::vector<bool>                                  &free_dof,
+      const std::vector<double>                                &start,
       const MPI_Comm                                            comm)
       : settings(settings)
       , partitioner(partitioner)
       , comm(comm)
+      , start_vector(start)
     {
       const unsigned int n_owned = partitioner->locally_owned_size();
       scale.assign(n_owned, 0.);
@@ -71,25 +72,6 @@ namespace rubberdyn
 
 
     void
-    AssembledStepEstimate::fill_start_vector(VectorType &q) const
-    {
-      // A hash of the global index (splitmix64): the same vector on any
-      // partition, with a component in every mode.
-      const unsigned int n_owned = partitioner->locally_owned_size();
-      for (unsigned int i = 0; i < n_owned; ++i)
-        {
-          std::uint64_t x =
-            partitioner->local_to_global(i) + 0x9e3779b97f4a7c15ull;
-          x                  = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-          x                  = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-          x                  = x ^ (x >> 31);
-          q.local_element(i) = double(x >> 11) * 0x1.0p-53 - 0.5;
-        }
-    }
-
-
-
-    void
     AssembledStepEstimate::refresh(const unsigned int      step,
                                    const StiffnessProduct &product)
     {
@@ -102,13 +84,14 @@ namespace rubberdyn
       estimate                = 0.;
       reference_undamped_step = 0.;
 
-      // q_0: the last Ritz vector (warm start), else pseudo-random; on the
-      // free dofs only, normalised.
+      // q_0: the last Ritz vector (warm start), else the start vector; on
+      // the free dofs only, normalised.
       VectorType &q0 = basis[0];
       if (has_warm)
         q0 = warm;
       else
-        fill_start_vector(q0);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          q0.local_element(i) = start_vector[i];
       for (unsigned int i = 0; i < n_owned; ++i)
         if (scale[i] == 0.)
           q0.local_element(i) = 0.;

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <istream>
@@ -127,6 +128,34 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /**
+       * A number in [-1/2, 1/2) from a node's position (rounded to single
+       * precision, so that round-off of a vertex's coordinates cannot
+       * change it) and a direction (splitmix64): the assembled step
+       * estimate's first start vector, the same on any partition.
+       */
+      double
+      pseudo_random(const Point<3> &x, const unsigned int component)
+      {
+        std::uint64_t h = 0x9e3779b97f4a7c15ull * (component + 1);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const float   rounded = static_cast<float>(x[d]);
+            std::uint32_t bits    = 0;
+            std::memcpy(&bits, &rounded, sizeof(bits));
+            h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+            h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+            h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+            h = h ^ (h >> 31);
+          }
+        return double(h >> 11) * 0x1.0p-53 - 0.5;
+      }
+    } // namespace
+
+
+
     ExplicitSolver::ExplicitSolver(
       const DoFHandler<3, 3> &                                   dof_handler,
       const std::vector<model::ForceContribution *> &            contributions,
@@ -156,6 +185,8 @@ namespace rubberdyn
       const unsigned int n_owned = partitioner->locally_owned_size();
       dof_component.resize(n_owned);
       dof_coordinate.resize(n_owned);
+      if (settings.assembled_step_estimate)
+        estimate_start.resize(n_owned);
       const FiniteElement<3> &   fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -173,6 +204,10 @@ namespace rubberdyn
                   dof_coordinate[local] =
                     cell->vertex(component_and_vertex.second)
                                 [component_and_vertex.first];
+                  if (settings.assembled_step_estimate)
+                    estimate_start[local] = pseudo_random(
+                      cell->vertex(component_and_vertex.second),
+                      component_and_vertex.first);
                 }
           }
       dof_group.assign(n_owned, 0);
@@ -830,7 +865,8 @@ namespace rubberdyn
         for (const KinematicConstraints::Entry &entry : constraints->entries())
           free_dof[entry.dof] = false;
       step_estimate = std::make_unique<AssembledStepEstimate>(
-        settings.assembled_step, partitioner, inverse_mass, free_dof, comm);
+        settings.assembled_step, partitioner, inverse_mass, free_dof,
+        estimate_start, comm);
       for (VectorType *vector :
            {&probe_displacement, &probe_force, &base_force})
         vector->reinit(partitioner);

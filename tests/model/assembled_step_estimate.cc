@@ -7,9 +7,9 @@
 // m = rho h^3 (m/2 at the ends) and springs (lambda + 2 mu) h: uniaxial
 // strain, uniform in each element, the F-bar centre and Gauss points alike.
 // The free-free chain's frequencies are (2c/h) sin(k pi / (2n)), k = 0..n
-// (Hughes, The Finite Element Method, section 9.1.1, eq. 9.1.30 and its
-// lumped-mass chain; Belytschko, Liu & Moran, Nonlinear Finite Elements
-// for Continua and Structures, section 6.3): the largest, k = n, the mode
+// (the lumped-mass chain: Hughes, The Finite Element Method, ch. 9;
+// Belytschko, Liu & Moran, Nonlinear Finite Elements for Continua and
+// Structures, section 6.3): the largest, k = n, the mode
 // u_i = (-1)^i, is omega_max = 2c/h with c^2 = (K + 4G/3)/rho, the law's
 // wave speed at rest. A cross-section's other patterns change no element's
 // centre volume (sum_a g0_a . u_a = 0) and are held by G = 2.2e-3 K only,

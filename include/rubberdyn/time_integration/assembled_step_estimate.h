@@ -59,12 +59,13 @@ namespace rubberdyn
      * state, i.e. the tangent including its geometric part). Each estimate
      * starts from the previous one's Ritz vector, so that it usually
      * converges in a few steps; the first starts from a pseudo-random
-     * vector of the global dof indices (the same on any partition).
+     * vector of the nodes' positions (the same on any partition, so that
+     * the Lanczos steps are the same up to the sums' round-off).
      *
      * The margin: a Ritz value $\theta$ lies below $\lambda_{max}$
      * (Rayleigh quotient), and the residual $r = |\beta_k s_k|$ of its Ritz
      * pair bounds the distance to the nearest eigenvalue (Parlett, *The
-     * Symmetric Eigenvalue Problem*, thm. 4.5.1). The estimate is
+     * Symmetric Eigenvalue Problem*, ch. 4). The estimate is
      * $\theta + r$, used only when $r \le$ tolerance $\theta$, rounded up
      * to 2^-11 relative (so that round-off of the sums on other partitions
      * does not change the step). It is an estimate, not a proof: a start
@@ -88,12 +89,16 @@ namespace rubberdyn
        * @param inverse_mass The inverse lumped mass (1/kg), owned entries.
        * @param free_dof Per owned dof whether it moves freely (false: a
        *   prescribed dof or a rigid part's node, left out).
+       * @param start The first estimate's start vector, owned entries: a
+       *   function of the node's position and the direction, so that it is
+       *   the same on any partition (the global dof numbering is not).
        */
       AssembledStepEstimate(
         const AssembledStepSettings                              &settings,
         const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
         const VectorType                                         &inverse_mass,
         const std::vector<bool>                                  &free_dof,
+        const std::vector<double>                                &start,
         const MPI_Comm                                            comm);
 
       /** Whether an estimate is due before step @p step. */
@@ -165,15 +170,13 @@ namespace rubberdyn
       double
       dot(const VectorType &a, const VectorType &b) const;
 
-      /** The first start vector: pseudo-random in the global dof index. */
-      void
-      fill_start_vector(VectorType &q) const;
-
       AssembledStepSettings                              settings;
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
       MPI_Comm                                           comm;
       /** M^{-1/2} on the free dofs, 0 on the others (owned entries). */
       std::vector<double> scale;
+      /** The first estimate's start vector (owned entries). */
+      std::vector<double> start_vector;
       /** The Lanczos vectors (max_iterations + 1) and two work vectors. */
       std::vector<VectorType> basis;
       VectorType              direction, product_vector, warm;

@@ -714,6 +714,11 @@ namespace rubberdyn
        * eps max|x| (mm): 1e-8 of the model's extent.
        */
       VectorType                 probe_displacement, probe_force, base_force;
+      /**
+       * The estimate's first start vector: pseudo-random in the owned
+       * dofs' node positions and directions (the same on any partition).
+       */
+      std::vector<double> estimate_start;
       model::ContributionResults probe_results;
       double                     probe_size = 0.;
 
