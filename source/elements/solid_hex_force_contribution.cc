@@ -54,6 +54,12 @@ namespace rubberdyn
       results.bulk_viscosity_power += step_result.bulk_viscosity_power;
       results.element_time_step =
         std::min(results.element_time_step, step_result.min_time_step);
+      results.element_undamped_time_step =
+        std::min(results.element_undamped_time_step,
+                 step_result.min_undamped_time_step);
+      results.element_damping_factor =
+        std::min(results.element_damping_factor,
+                 step_result.min_damping_factor);
       if (step_result.failure.failed && !results.failure.failed)
         {
           std::ostringstream message;
@@ -63,6 +69,17 @@ namespace rubberdyn
           results.failure.failed  = true;
           results.failure.message = message.str();
         }
+    }
+
+
+
+    bool
+    SolidHexForces::in_assembled_step_estimate() const
+    {
+      // compute_forces() keeps the new history and its step_result until
+      // the next call: a probe before the step's own evaluation leaves
+      // nothing behind.
+      return true;
     }
 
 

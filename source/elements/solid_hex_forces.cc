@@ -37,6 +37,9 @@ namespace rubberdyn
         double      energy[L];
         double      bulk_viscosity_power[L];
         double      time_step[L];
+        // The same without bulk viscosity (Q = 0), for the assembled
+        // estimate's damping factor (time_integration::AssembledStepEstimate).
+        double      undamped_time_step[L];
         // Smallest J_q / J0 of the lane's Gauss points (F-bar), else 1.
         double      min_volume_ratio[L];
         FailureKind failure[L];
@@ -347,6 +350,7 @@ namespace rubberdyn
         store(length / (Q_step + sqrt(Q_step * Q_step +
                                       step_wave_speed * step_wave_speed)),
               result.time_step + h);
+        store(length / step_wave_speed, result.undamped_time_step + h);
 
         // Power of the viscous force actually applied, sum_a f_a . v_a. Its
         // force is -q sum_q w_q J_q g_a(q). F-bar: the pressure's deviator
@@ -663,6 +667,8 @@ namespace rubberdyn
       result.bulk_viscosity_power = 0.;
       result.bulk_viscosity_power_by_group.assign(groups.size(), 0.);
       result.min_time_step        = std::numeric_limits<double>::max();
+      result.min_undamped_time_step = std::numeric_limits<double>::max();
+      result.min_damping_factor     = 1.;
       result.min_volume_ratio     = 1.;
       result.failure.failed       = false;
       result.failure.kind         = FailureKind::none;
@@ -743,6 +749,19 @@ namespace rubberdyn
                   block_result.time_step[l] :
                   block_result.time_step[l] *
                     time_step_factors[block.element[l]]);
+              // The assembled estimate's inputs: the step without bulk
+              // viscosity and the viscosity's factor on it, sqrt(1 + xi^2)
+              // - xi with xi = Q / c (doc/theory.md section 8.3).
+              result.min_undamped_time_step =
+                std::min(result.min_undamped_time_step,
+                         time_step_factors.empty() ?
+                           block_result.undamped_time_step[l] :
+                           block_result.undamped_time_step[l] *
+                             time_step_factors[block.element[l]]);
+              result.min_damping_factor =
+                std::min(result.min_damping_factor,
+                         block_result.time_step[l] /
+                           block_result.undamped_time_step[l]);
               for (unsigned int a = 0; a < n_nodes; ++a)
                 for (unsigned int d = 0; d < 3; ++d)
                   force[block.dofs[a][d][l]] += block_result.force[a][d][l];

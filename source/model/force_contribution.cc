@@ -18,6 +18,8 @@ namespace rubberdyn
       friction_dissipation = 0.;
       external_work        = 0.;
       element_time_step    = std::numeric_limits<double>::max();
+      element_undamped_time_step = std::numeric_limits<double>::max();
+      element_damping_factor     = 1.;
       contact_time_step    = std::numeric_limits<double>::max();
       force_on_body.assign(n_bodies, Tensor<1, 3>());
       moment_on_body.assign(n_bodies, Tensor<1, 3>());

@@ -451,6 +451,10 @@ namespace rubberdyn
       time_integration::ExplicitSettings settings;
       settings.time_step_scale   = time_integration.time_step_scale;
       settings.minimum_time_step = time_integration.minimum_time_step;
+      settings.assembled_step_estimate =
+        time_integration.assembled_step_estimate;
+      settings.assembled_step.refresh_interval =
+        time_integration.stable_step_refresh_interval;
       settings.gravity           = model.gravity;
       settings.n_groups          = std::max<unsigned int>(1, model.parts.size());
       explicit_solver = std::make_unique<time_integration::ExplicitSolver>(

@@ -743,6 +743,24 @@ namespace rubberdyn
       entries.emplace_back("added_mass_by_part", by_part + "}");
       entries.emplace_back("initial_penetrations",
                            setup::initial_penetrations_json(model));
+      // Stable time step estimate = assembled: its estimates, their cost
+      // and the step's gain over the element bound.
+      if (const time_integration::AssembledStepEstimate *estimate =
+            s.assembled_step_estimate())
+        {
+          const auto &stats = estimate->statistics();
+          entries.emplace_back(
+            "assembled_step_estimate",
+            "{\"refreshes\": " + std::to_string(stats.refreshes) +
+              ", \"unconverged\": " + std::to_string(stats.unconverged) +
+              ", \"stiffness_products\": " + std::to_string(stats.products) +
+              ", \"seconds\": " +
+              json_number(Utilities::MPI::max(stats.seconds, comm)) +
+              ", \"last_gain\": " + json_number(stats.last_gain) +
+              ", \"smallest_gain\": " + json_number(stats.smallest_gain) +
+              ", \"largest_gain\": " + json_number(stats.largest_gain) +
+              "}");
+        }
       return entries;
     }
 

@@ -12,7 +12,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iomanip>
+#include <limits>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -126,6 +128,34 @@ namespace rubberdyn
 
 
 
+    namespace
+    {
+      /**
+       * A number in [-1/2, 1/2) from a node's position (rounded to single
+       * precision, so that round-off of a vertex's coordinates cannot
+       * change it) and a direction (splitmix64): the assembled step
+       * estimate's first start vector, the same on any partition.
+       */
+      double
+      pseudo_random(const Point<3> &x, const unsigned int component)
+      {
+        std::uint64_t h = 0x9e3779b97f4a7c15ull * (component + 1);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const float   rounded = static_cast<float>(x[d]);
+            std::uint32_t bits    = 0;
+            std::memcpy(&bits, &rounded, sizeof(bits));
+            h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+            h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+            h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+            h = h ^ (h >> 31);
+          }
+        return double(h >> 11) * 0x1.0p-53 - 0.5;
+      }
+    } // namespace
+
+
+
     ExplicitSolver::ExplicitSolver(
       const DoFHandler<3, 3> &                                   dof_handler,
       const std::vector<model::ForceContribution *> &            contributions,
@@ -155,6 +185,8 @@ namespace rubberdyn
       const unsigned int n_owned = partitioner->locally_owned_size();
       dof_component.resize(n_owned);
       dof_coordinate.resize(n_owned);
+      if (settings.assembled_step_estimate)
+        estimate_start.resize(n_owned);
       const FiniteElement<3> &   fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -172,6 +204,10 @@ namespace rubberdyn
                   dof_coordinate[local] =
                     cell->vertex(component_and_vertex.second)
                                 [component_and_vertex.first];
+                  if (settings.assembled_step_estimate)
+                    estimate_start[local] = pseudo_random(
+                      cell->vertex(component_and_vertex.second),
+                      component_and_vertex.first);
                 }
           }
       dof_group.assign(n_owned, 0);
@@ -497,6 +533,19 @@ namespace rubberdyn
           write_doubles(out, acceleration.begin(), n_owned);
           mass_scaling->save(out);
         }
+      // The assembled step estimate's state (its warm start), so that a
+      // restart takes the same steps; a checkpoint before the first step
+      // has none yet (zeros: a fresh estimate).
+      if (settings.assembled_step_estimate)
+        {
+          if (step_estimate)
+            step_estimate->save(out);
+          else
+            {
+              const std::vector<double> none(6 + n_owned, 0.);
+              write_doubles(out, none.data(), none.size());
+            }
+        }
       if (!out)
         throw SolverFailure("writing the checkpoint failed");
     }
@@ -509,7 +558,9 @@ namespace rubberdyn
       using binary_io::read_doubles;
       // Every rank reads its own piece; only if all succeeded do they
       // exchange ghost values: a rank that fails must not leave the others
-      // waiting in a collective.
+      // waiting in a collective. (The assembled step estimate is made
+      // first: that is collective.)
+      make_step_estimate();
       std::string error;
       try
         {
@@ -599,6 +650,8 @@ namespace rubberdyn
                            "selective mass scaling accelerations");
               mass_scaling->load(in);
             }
+          if (step_estimate)
+            step_estimate->load(in);
         }
       catch (const std::exception &failure)
         {
@@ -749,12 +802,17 @@ namespace rubberdyn
       // Collective 1: the smallest element and contact steps of the whole
       // model (a failed element: a negative element step), then combined:
       // elements and penalty springs act in parallel on contact nodes.
-      double minima[2];
+      // With the assembled estimate also the elements' step without bulk
+      // viscosity and the viscosity's smallest factor on it.
+      double minima[4];
       minima[0] = results.failure.failed ? -1. : results.element_time_step;
       minima[1] = results.contact_time_step;
-      Utilities::MPI::min(ArrayView<const double>(minima, 2),
+      minima[2] = results.element_undamped_time_step;
+      minima[3] = results.element_damping_factor;
+      const unsigned int n_minima = step_estimate ? 4 : 2;
+      Utilities::MPI::min(ArrayView<const double>(minima, n_minima),
                           comm,
-                          ArrayView<double>(minima, 2));
+                          ArrayView<double>(minima, n_minima));
       timing.communication += lap(clock);
       if (minima[0] < 0.)
         {
@@ -767,8 +825,18 @@ namespace rubberdyn
           throw SolverFailure(text + ", at time " + number(current_time) +
                               " ms, step " + std::to_string(step_number));
         }
-      const double stable_step = 1. / std::sqrt(1. / (minima[0] * minima[0]) +
-                                                1. / (minima[1] * minima[1]));
+      // The elements' step: their bound, or the assembled model's estimate
+      // (never below the bound). The contact springs combine with it either
+      // way: 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 is Weyl's inequality,
+      // lambda_max(A + C) <= lambda_max(A) + lambda_max(C), with the
+      // springs' M^{-1} C diagonal (doc/theory.md section 8.3).
+      const double element_step =
+        step_estimate ?
+          step_estimate->element_time_step(minima[0], minima[2], minima[3]) :
+          minima[0];
+      const double stable_step =
+        1. / std::sqrt(1. / (element_step * element_step) +
+                       1. / (minima[1] * minima[1]));
       const double new_step    = settings.time_step_scale * stable_step;
       if (new_step < settings.minimum_time_step)
         throw SolverFailure("the stable time step " + number(new_step) +
@@ -777,6 +845,106 @@ namespace rubberdyn
                             " ms at time " + number(current_time) +
                             " ms, step " + std::to_string(step_number));
       return new_step;
+    }
+
+
+
+    void
+    ExplicitSolver::make_step_estimate()
+    {
+      if (!settings.assembled_step_estimate || step_estimate)
+        return;
+      if (mass_scaling)
+        throw SolverFailure(
+          "Time integration/Stable time step estimate = assembled needs a "
+          "lumped mass matrix; selective mass scaling makes it a full one: "
+          "use Stable time step estimate = element with it");
+      // The free dofs: not prescribed, not a rigid part's.
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      std::vector<bool>  free_dof(n_owned, true);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        if (rigid_dof[i])
+          free_dof[i] = false;
+      if (constraints != nullptr)
+        for (const KinematicConstraints::Entry &entry : constraints->entries())
+          free_dof[entry.dof] = false;
+      step_estimate = std::make_unique<AssembledStepEstimate>(
+        settings.assembled_step, partitioner, inverse_mass, free_dof,
+        estimate_start, comm);
+      for (VectorType *vector :
+           {&probe_displacement, &probe_force, &base_force})
+        vector->reinit(partitioner);
+      // The probe: 1e-8 of the model's extent, so that the strain it makes
+      // is far below any nonlinearity of the laws and far above the
+      // forces' round-off (1e-16 of them) in elements down to 1e-6 of the
+      // model's size.
+      double extent[6] = {0., 0., 0., 0., 0., 0.};
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          extent[d]     = -std::numeric_limits<double>::max();
+          extent[3 + d] = -std::numeric_limits<double>::max();
+        }
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const unsigned int d = dof_component[i];
+          extent[d]            = std::max(extent[d], dof_coordinate[i]);
+          extent[3 + d]        = std::max(extent[3 + d], -dof_coordinate[i]);
+        }
+      Utilities::MPI::max(ArrayView<const double>(extent, 6),
+                          comm,
+                          ArrayView<double>(extent, 6));
+      double size = 0.;
+      for (unsigned int d = 0; d < 3; ++d)
+        size = std::max(size, extent[d] + extent[3 + d]);
+      probe_size = 1e-8 * (size > 0. && std::isfinite(size) ? size : 1.);
+    }
+
+
+
+    void
+    ExplicitSolver::refresh_step_estimate()
+    {
+      // The stiffness forces (the elements') at a displacement; false if
+      // an element failed on some rank (collective).
+      const auto forces_at = [this](const VectorType &displacement,
+                                    VectorType       &force) {
+        probe_results.reset(settings.n_groups, bodies.size());
+        const model::EvaluationPoint point{
+          displacement, v, mass, bodies, current_time};
+        force = 0.;
+        for (model::ForceContribution *contribution : contributions)
+          if (contribution->in_assembled_step_estimate())
+            contribution->add_forces(point, force, probe_results);
+        force.compress(VectorOperation::add);
+        return Utilities::MPI::max(probe_results.failure.failed ? 1 : 0,
+                                   comm) == 0;
+      };
+      const unsigned int n_owned = partitioner->locally_owned_size();
+      // K x = (f(u + eps x) - f(u)) / eps, with eps max|x| = probe_size.
+      const auto product = [&](const VectorType &x, VectorType &y) {
+        double largest = 0.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          largest = std::max(largest, std::abs(x.local_element(i)));
+        largest = Utilities::MPI::max(largest, comm);
+        if (!(largest > 0.))
+          {
+            y = 0.;
+            return true;
+          }
+        const double eps = probe_size / largest;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          probe_displacement.local_element(i) =
+            u.local_element(i) + eps * x.local_element(i);
+        probe_displacement.update_ghost_values();
+        if (!forces_at(probe_displacement, probe_force))
+          return false;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          y.local_element(i) =
+            (probe_force.local_element(i) - base_force.local_element(i)) / eps;
+        return true;
+      };
+      if (forces_at(u, base_force))
+        step_estimate->refresh(step_number, product);
     }
 
 
@@ -1330,6 +1498,7 @@ namespace rubberdyn
                              "the velocities are past the end time"));
       if (!started)
         start();
+      make_step_estimate();
       sums.reinit(bodies.size(),
                   constraints ? constraints->n_groups() : 0,
                   settings.n_groups,
@@ -1337,6 +1506,14 @@ namespace rubberdyn
       auto clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
+          // The assembled step estimate's probes before the step's own
+          // evaluation, which overwrites what they leave in the elements.
+          if (step_estimate && step_estimate->due(step_number))
+            {
+              lap(clock);
+              refresh_step_estimate();
+              timing.element_forces += lap(clock);
+            }
           const StepWeights w = state_at_current_time(clock, monitor);
           advance_displacements(w.new_step);
           for (model::ForceContribution *contribution : contributions)

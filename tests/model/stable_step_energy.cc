@@ -215,7 +215,16 @@ main(int argc, char **argv)
     {"impact, displacement, penalty 10", Formulation::displacement, 0., 10.}};
 
   // The allowed excess of E over E_0 (see the header).
-  const double bound = 0.02;
+#ifndef STABLE_STEP_ENERGY_ASSEMBLED
+  const double      bound      = 0.02;
+  const std::string bound_text = "2 %";
+#else
+  // At 0.9 of the assembled critical step the highest modes' share of E
+  // oscillates more (measured: up to 2.9 % in the fixed-base cases, the
+  // same in the first and the last 2000 steps).
+  const double      bound      = 0.05;
+  const std::string bound_text = "5 %";
+#endif
   // Every case runs; the failures are reported together.
   std::string failures;
   for (const Case &test_case : cases)
@@ -230,6 +239,15 @@ main(int argc, char **argv)
       time_integration.bulk_viscosity_linear    = 0.;
       time_integration.bulk_viscosity_quadratic = 0.;
       time_integration.fbar_stabilization       = test_case.stabilization;
+#ifdef STABLE_STEP_ENERGY_ASSEMBLED
+      // tests/model/stable_step_energy_assembled.cc: the same cases with
+      // the assembled estimate, refreshed every STABLE_STEP_ENERGY_REFRESH
+      // steps.
+      time_integration.assembled_step_estimate      = true;
+      time_integration.stable_step_refresh_interval =
+        STABLE_STEP_ENERGY_REFRESH;
+      time_integration.time_step_scale = STABLE_STEP_ENERGY_SCALE;
+#endif
       parameters::Output output;
       output.directory               = "stable_step_energy";
       output.field_output_interval   = 0.;
@@ -267,8 +285,33 @@ main(int argc, char **argv)
         growth = std::max(growth, recorder.energies[i] / E_ref - 1.);
       const double jump =
         left ? (E_ref - recorder.contact_work[recorder.left]) / E0 - 1. : 0.;
+#ifdef STABLE_STEP_ENERGY_ASSEMBLED
+      // No growth: the largest E / E_ref - 1 of the last 2000 steps against
+      // that of the 2000 after the impact (or the start).
+      double early = 0., late = 0.;
+      {
+        const std::size_t n = recorder.energies.size();
+        for (std::size_t i = recorder.left;
+             i < std::min(n, recorder.left + 2000);
+             ++i)
+          early = std::max(early, recorder.energies[i] / E_ref - 1.);
+        for (std::size_t i = (n > 2000 ? n - 2000 : 0); i < n; ++i)
+          late = std::max(late, recorder.energies[i] / E_ref - 1.);
+        std::cerr << "  windows: early " << early << ", late " << late
+                  << std::endl;
+      }
+      // Bounded: an instability grows without end, an oscillation does
+      // not (measured: late - early at most 2e-4).
+      out() << test_case.name
+            << ": no growth (last 2000 steps' largest within 2e-3 of the "
+               "first 2000's): "
+            << (late <= early + 2e-3 ? "yes" : "no") << std::endl;
+      if (late > early + 2e-3)
+        failures += test_case.name + ": the energy grew from " +
+                    testing::sci(early) + " to " + testing::sci(late) + "; ";
+#endif
       out() << test_case.name << ": " << recorder.steps
-            << " steps, largest E / E_ref - 1 below 2 %: "
+            << " steps, largest E / E_ref - 1 below " << bound_text << ": "
             << (finite && failure.empty() && growth <= bound ? "yes" : "no");
       if (test_case.penalty_scale > 0.)
         out() << "; impact (kinetic + internal) / E_0 - 1 = "
@@ -287,7 +330,8 @@ main(int argc, char **argv)
         failures += test_case.name + ": the energy is not finite; ";
       else if (growth > bound)
         failures += test_case.name + ": the energy grew by " +
-                    testing::sci(growth) + " of E_ref (bound 2e-2); ";
+                    testing::sci(growth) + " of E_ref (bound " +
+                    testing::sci(bound) + "); ";
       else if (test_case.penalty_scale > 0. && test_case.penalty_scale <= 0.1 &&
                jump > bound)
         failures += test_case.name + ": the impact changed the energy by " +

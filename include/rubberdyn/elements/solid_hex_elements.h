@@ -180,6 +180,14 @@ namespace rubberdyn
       std::vector<double> bulk_viscosity_power_by_group;
       /** Smallest stable element time step (ms). */
       double min_time_step = std::numeric_limits<double>::max();
+      /** The same without the bulk viscosity's Q (ms). */
+      double min_undamped_time_step = std::numeric_limits<double>::max();
+      /**
+       * Smallest ratio of an element's step with bulk viscosity to the one
+       * without, $\sqrt{1+\xi^2}-\xi$ with $\xi = Q/c$ (-; 1 without
+       * compression).
+       */
+      double min_damping_factor = 1.;
       /**
        * Smallest Gauss-point volume ratio $J_q/J_0$ of the F-bar elements
        * (1 if there are none): the margin to

@@ -37,6 +37,10 @@ namespace rubberdyn
                  VectorType &                  f,
                  model::ContributionResults &  results) override;
 
+      /** Yes: the elements' stiffness is the assembled estimate's. */
+      bool
+      in_assembled_step_estimate() const override;
+
       void
       accept_step() override;
 

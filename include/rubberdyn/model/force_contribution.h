@@ -57,6 +57,14 @@ namespace rubberdyn
       double external_work = 0.;
       /** Smallest stable step of the elements (ms). */
       double element_time_step = std::numeric_limits<double>::max();
+      /**
+       * Smallest element step without bulk viscosity (ms), and the
+       * smallest ratio of an element's step with it to the one without
+       * (-): the inputs of the assembled step estimate
+       * (time_integration::AssembledStepEstimate).
+       */
+      double element_undamped_time_step = std::numeric_limits<double>::max();
+      double element_damping_factor     = 1.;
       /** Smallest stable step of the penalty springs (ms). */
       double contact_time_step = std::numeric_limits<double>::max();
       /** Force of the solid on each rigid body (kN), indexed like the bodies.
@@ -185,6 +193,22 @@ namespace rubberdyn
        */
       virtual bool
       follow_geometry()
+      {
+        return false;
+      }
+
+      /**
+       * Whether the explicit solver's assembled step estimate
+       * (time_integration::AssembledStepEstimate) takes this
+       * contribution's stiffness by finite differences of its add_forces():
+       * true for the elements, whose add_forces() may be called at a
+       * probed displacement and again at the step's own (it keeps nothing
+       * of an evaluation before accept_step() but what the next one
+       * overwrites). Contact springs are combined with the estimate
+       * instead (doc/theory.md section 8.3); the default is no.
+       */
+      virtual bool
+      in_assembled_step_estimate() const
       {
         return false;
       }

@@ -123,6 +123,15 @@ namespace rubberdyn
       double bulk_viscosity_linear = 0.06, bulk_viscosity_quadratic = 1.5;
       /** F-bar volumetric stabilisation beta (-). */
       double fbar_stabilization = 0.;
+      /**
+       * `Stable time step estimate`: false for "element" (the element
+       * bound, doc/theory.md section 8.3), true for "assembled" (the
+       * assembled model's largest frequency by Lanczos steps,
+       * time_integration::AssembledStepEstimate).
+       */
+      bool assembled_step_estimate = false;
+      /** Steps between two assembled estimates (-). */
+      unsigned int stable_step_refresh_interval = 100;
 
       /** Declare the entries in subsection `Time integration`. */
       static void

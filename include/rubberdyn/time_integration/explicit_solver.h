@@ -7,6 +7,7 @@
 #include <rubberdyn/base/vector.h>
 #include <rubberdyn/model/force_contribution.h>
 #include <rubberdyn/model/rigid_body.h>
+#include <rubberdyn/time_integration/assembled_step_estimate.h>
 #include <rubberdyn/time_integration/kinematic_constraints.h>
 
 #include <array>
@@ -228,6 +229,14 @@ namespace rubberdyn
       double time_step_scale = 0.9;
       /** The run stops with an error below this step (ms). */
       double minimum_time_step = 1e-8;
+      /**
+       * Whether the elements' step comes from the assembled model's
+       * largest frequency (AssembledStepEstimate, `Stable time step
+       * estimate = assembled`) instead of the element bound alone.
+       */
+      bool assembled_step_estimate = false;
+      /** Its settings (refresh interval). */
+      AssembledStepSettings assembled_step;
       /** Gravitational acceleration (mm/ms^2), on solid and bodies. */
       Tensor<1, 3> gravity;
       /**
@@ -502,6 +511,17 @@ namespace rubberdyn
       void
       load(std::istream &in);
 
+      /**
+       * The assembled step estimate (`Stable time step estimate =
+       * assembled`), or nullptr (the element bound; also before the first
+       * step).
+       */
+      const AssembledStepEstimate *
+      assembled_step_estimate() const
+      {
+        return step_estimate.get();
+      }
+
       /** Time spent in each part of the steps so far (s, this rank). */
       const StepTimings &timings() const { return timing; }
 
@@ -586,6 +606,21 @@ namespace rubberdyn
        */
       double
       next_time_step(std::chrono::steady_clock::time_point &clock);
+
+      /**
+       * The assembled step estimate: made (before the first step, or
+       * loaded) with the free dofs known, after set_rigid_parts().
+       */
+      void
+      make_step_estimate();
+
+      /**
+       * A new assembled estimate at u^n, if one is due: the elements'
+       * internal forces at u^n + eps x by finite differences (before the
+       * step's own evaluation, which overwrites what they leave).
+       */
+      void
+      refresh_step_estimate();
 
       /** The solid's owned velocities to t_{n+1/2}; its kinetic energy at
        * t_n, per group too (into `sums`). */
@@ -703,6 +738,22 @@ namespace rubberdyn
       model::ContributionResults  results;
       StepSums                    sums;
       StepTimings                 timing;
+
+      /** The assembled step estimate, or nullptr. */
+      std::unique_ptr<AssembledStepEstimate> step_estimate;
+      /**
+       * Its probes: the displacement u^n + eps x (ghosted), the elements'
+       * forces there and at u^n, their results, and the probe's size
+       * eps max|x| (mm): 1e-8 of the model's extent.
+       */
+      VectorType                 probe_displacement, probe_force, base_force;
+      /**
+       * The estimate's first start vector: pseudo-random in the owned
+       * dofs' node positions and directions (the same on any partition).
+       */
+      std::vector<double> estimate_start;
+      model::ContributionResults probe_results;
+      double                     probe_size = 0.;
 
       /** Selective mass scaling, or nullptr. */
       std::unique_ptr<SelectiveMassScaling> mass_scaling;
