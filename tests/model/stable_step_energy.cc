@@ -225,6 +225,9 @@ main(int argc, char **argv)
   const double      bound      = 0.05;
   const std::string bound_text = "5 %";
 #endif
+  // The allowed change of the solid's energy by an impact at the default
+  // penalty (see the header).
+  const double jump_bound = 0.02;
   // Every case runs; the failures are reported together.
   std::string failures;
   for (const Case &test_case : cases)
@@ -313,9 +316,18 @@ main(int argc, char **argv)
       out() << test_case.name << ": " << recorder.steps
             << " steps, largest E / E_ref - 1 below " << bound_text << ": "
             << (finite && failure.empty() && growth <= bound ? "yes" : "no");
+#ifndef STABLE_STEP_ENERGY_ASSEMBLED
       if (test_case.penalty_scale > 0.)
         out() << "; impact (kinetic + internal) / E_0 - 1 = "
               << std::lround(100. * jump) << " %";
+#else
+      // The stiff penalty's jump (6-10 %) follows where in a step each
+      // node touched, which the estimate's last digits move: on stderr
+      // only.
+      if (test_case.penalty_scale > 0. && test_case.penalty_scale <= 0.1)
+        out() << "; impact (kinetic + internal) / E_0 - 1 below 2 %: "
+              << (jump <= jump_bound ? "yes" : "no");
+#endif
       out() << std::endl;
       std::cerr << test_case.name << ": " << recorder.steps
                 << " steps, largest E / E_ref - 1 = " << growth
@@ -333,7 +345,7 @@ main(int argc, char **argv)
                     testing::sci(growth) + " of E_ref (bound " +
                     testing::sci(bound) + "); ";
       else if (test_case.penalty_scale > 0. && test_case.penalty_scale <= 0.1 &&
-               jump > bound)
+               jump > jump_bound)
         failures += test_case.name + ": the impact changed the energy by " +
                     testing::sci(jump) + " (bound 2e-2); ";
     }
