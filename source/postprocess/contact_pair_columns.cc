@@ -143,19 +143,18 @@ namespace rubberdyn
                                number(MPI::max(t.search_seconds, comm)));
           entries.emplace_back(names[p] + "_evaluation_seconds",
                                number(MPI::max(t.evaluation_seconds, comm)));
-          // Each rank's (the balance of the pair's work).
-          std::string by_rank = "[";
-          for (const double seconds :
-               MPI::all_gather(comm, t.evaluation_seconds))
-            by_rank += (by_rank.size() > 1 ? ", " : "") + number(seconds);
+          // Each rank's (the balance of the pair's work), and of it the
+          // time spent waiting for the other ranks (positions, force sums).
+          const auto by_rank = [&](const double seconds) {
+            std::string list = "[";
+            for (const double value : MPI::all_gather(comm, seconds))
+              list += (list.size() > 1 ? ", " : "") + number(value);
+            return list + "]";
+          };
           entries.emplace_back(names[p] + "_evaluation_seconds_by_rank",
-                               by_rank + "]");
-          // Of which waiting for the other ranks (positions, force sums).
-          std::string waiting = "[";
-          for (const double seconds : MPI::all_gather(comm, t.waiting_seconds))
-            waiting += (waiting.size() > 1 ? ", " : "") + number(seconds);
+                               by_rank(t.evaluation_seconds));
           entries.emplace_back(names[p] + "_waiting_seconds_by_rank",
-                               waiting + "]");
+                               by_rank(t.waiting_seconds));
         }
     }
   } // namespace postprocess

@@ -509,10 +509,7 @@ namespace rubberdyn
       // --simulate-crash-at (RunOptions): a testing aid, doc/restarts.md.
       if (t >= progress.crash_time)
         std::raise(SIGKILL);
-      max_energy_error =
-        std::max(max_energy_error, s.energies().absolute_error());
-      deformable_errors.add(s.energies().absolute_error(),
-                            s.energies().largest_deformable);
+      record_energy_errors();
       if (t >= next_history * (1. - 1e-12))
         {
           write_history_row(view, log);
@@ -548,15 +545,25 @@ namespace rubberdyn
 
 
     void
+    ExplicitSimulation::record_energy_errors()
+    {
+      const time_integration::EnergyBalance &energies =
+        explicit_solver->energies();
+      max_energy_error =
+        std::max(max_energy_error, energies.absolute_error());
+      deformable_errors.add(energies.absolute_error(),
+                            energies.largest_deformable);
+    }
+
+
+
+    void
     ExplicitSimulation::monitor_end_state(
       const postprocess::SimulationView &view,
       std::ostream                      &log)
     {
       const time_integration::ExplicitSolver &s = *explicit_solver;
-      max_energy_error =
-        std::max(max_energy_error, s.energies().absolute_error());
-      deformable_errors.add(s.energies().absolute_error(),
-                            s.energies().largest_deformable);
+      record_energy_errors();
       if (last_row_time < s.time())
         write_history_row(view, log);
       for (const auto &plugin : postprocessors)

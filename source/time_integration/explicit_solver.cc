@@ -1499,10 +1499,7 @@ namespace rubberdyn
       if (!started)
         start();
       make_step_estimate();
-      sums.reinit(bodies.size(),
-                  constraints ? constraints->n_groups() : 0,
-                  settings.n_groups,
-                  shared_dofs.size());
+      size_step_sums();
       auto clock = std::chrono::steady_clock::now();
       while (current_time < end_time * (1. - 1e-12))
         {
@@ -1532,14 +1529,22 @@ namespace rubberdyn
 
 
     void
-    ExplicitSolver::monitor_end_state(const std::function<void()> &monitor)
+    ExplicitSolver::size_step_sums()
     {
-      AssertThrow(started && !end_state_monitored,
-                  ExcMessage("monitor_end_state() once, after run()"));
       sums.reinit(bodies.size(),
                   constraints ? constraints->n_groups() : 0,
                   settings.n_groups,
                   shared_dofs.size());
+    }
+
+
+
+    void
+    ExplicitSolver::monitor_end_state(const std::function<void()> &monitor)
+    {
+      AssertThrow(started && !end_state_monitored,
+                  ExcMessage("monitor_end_state() once, after run()"));
+      size_step_sums();
       auto clock = std::chrono::steady_clock::now();
       state_at_current_time(clock, monitor);
       end_state_monitored = true;

@@ -343,6 +343,10 @@ namespace rubberdyn
       write_history_row(const postprocess::SimulationView &view,
                         std::ostream                      &log);
 
+      /** Add the solver's energy error now to the run's records. */
+      void
+      record_energy_errors();
+
       /**
        * What ExplicitSolver::monitor_end_state() calls once at the end
        * time: the energy-error records, the last history row (unless the

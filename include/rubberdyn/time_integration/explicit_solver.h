@@ -548,6 +548,14 @@ namespace rubberdyn
        * over ranks, the energies at t_n and the rigid bodies to t_{n+1/2};
        * then @p monitor. Returns the step's weights.
        */
+      /**
+       * Size the step's sums (StepSums) for the bodies, constraint groups,
+       * element groups and shared dofs; at the start of run() and of
+       * monitor_end_state() (which a restart at its end time calls alone).
+       */
+      void
+      size_step_sums();
+
       StepWeights
       state_at_current_time(std::chrono::steady_clock::time_point &clock,
                             const std::function<void()>           &monitor);
